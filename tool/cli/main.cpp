@@ -1,0 +1,75 @@
+// hullcook: the command line. Parsing and exit codes only; the work is in hullcook::cook.
+#include "commands.h"
+
+#include "hullcook/core/error.h"
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <new>
+#include <utility>
+#include <vector>
+
+namespace hullcook::cli {
+namespace {
+
+std::vector<std::pair<int, AddCommand>>& registered_commands() {
+  static std::vector<std::pair<int, AddCommand>> commands;
+  return commands;
+}
+
+}  // namespace
+
+CommandRegistration::CommandRegistration(int order, AddCommand add) {
+  registered_commands().emplace_back(order, add);
+}
+
+}  // namespace hullcook::cli
+
+int main(int argc, char** argv) {
+  using namespace hullcook;
+  CLI::App app{
+      "hullcook " HULLCOOK_VERSION
+      ": traces sprite silhouettes, splits them into approximately convex pieces (Lien-Amato ACD)\n"
+      "and writes their convex hulls for 2D physics engines.\n\n"
+      "Exit codes: 0 success, 1 usage error, 2 bad input, 3 output could not be written,\n"
+      "4 internal error.",
+      "hullcook"};
+  app.set_version_flag("--version", "hullcook " HULLCOOK_VERSION);
+  app.require_subcommand(0, 1);
+
+  cli::CommandAction action;
+  auto commands = cli::registered_commands();
+  std::stable_sort(commands.begin(), commands.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& command : commands) command.second(app, action);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return static_cast<int>(ExitCode::usage);
+  }
+  if (!action) {
+    std::cout << app.help();
+    return app.get_subcommands().empty() && argc > 1 ? static_cast<int>(ExitCode::usage) : 0;
+  }
+  try {
+    return action();
+  } catch (const Error& e) {
+    std::cerr << "hullcook: error: " << e.what() << "\n";
+    return static_cast<int>(e.code);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hullcook: error: out of memory\n";
+    return static_cast<int>(ExitCode::internal);
+  } catch (const std::exception& e) {
+    std::cerr << "hullcook: internal error: " << e.what() << "\n";
+    return static_cast<int>(ExitCode::internal);
+  }
+}

@@ -1,0 +1,79 @@
+// What the cooker produces for one asset, before any writer turns it into bytes.
+// Every writer (debug JSON, .hcb bundle, glTF) reads this and nothing else.
+#pragma once
+
+#include "hullcook/core/polygon.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hullcook {
+
+// Maps input units (pixels, or .poly units) to output units:
+//   out = (in - origin) * scale, then y negated if flip_y.
+struct Transform {
+  double scale = 1.0;
+  Vec2 origin{0.0, 0.0};
+  bool flip_y = false;
+
+  Vec2 apply(Vec2 in) const {
+    Vec2 out = (in - origin) * scale;
+    if (flip_y) out.y = -out.y;
+    return out;
+  }
+};
+
+// Optional per-asset physics properties, passed through to the engines.
+struct PhysicsProperties {
+  float density = 1.0f;      // [kg/unit²]
+  float friction = 0.2f;     // unitless, Box2D's default
+  float restitution = 0.0f;  // unitless
+  bool sensor = false;
+  std::uint16_t category_bits = 0x0001;
+  std::uint16_t mask_bits = 0xFFFF;
+};
+
+// One approximately convex piece of the decomposition.
+struct CookedPiece {
+  Region component;  // [output units] the piece of the input polygon
+  Ring hull;         // [output units] its convex hull (after engine constraints), CCW
+  double concavity;  // [output units] under the asset's measure
+};
+
+// One level of detail: the hulls of the decomposition at tolerance tau.
+struct CookedLevel {
+  double tau = 0.0;         // [output units]
+  std::vector<Ring> hulls;  // [output units] convex, CCW, no repeated or collinear vertex
+};
+
+struct CookedStats {
+  std::size_t traced_vertices = 0;
+  std::size_t pieces = 0;
+  double max_concavity = 0.0;  // [output units]
+  double convexity = 1.0;      // Eq. 9 of the paper: Σ area(C) / Σ area(hull(C))
+  double decompose_ms = 0.0;
+  double trace_ms = 0.0;
+  double total_ms = 0.0;
+};
+
+struct CookedAsset {
+  std::string name;      // path relative to the input root, '/'-separated
+  std::string source;    // the file it came from, as given
+  int image_width = 0;   // [px] 0 when the input is a polygon file
+  int image_height = 0;  // [px]
+  double pixels_per_unit = 1.0;
+  Vec2 pivot{0.5, 0.5};  // normalised image coordinates of the output origin
+  Transform transform;
+  double tau = 0.0;                 // [output units] of the finest level
+  std::string measure = "h1";       // sl | sp | h1 | h2
+  std::vector<Region> regions;      // [output units] the input after clean-up
+  std::vector<CookedPiece> pieces;  // the finest level, with components
+  std::vector<CookedLevel> levels;  // finest first; levels[0] holds the pieces' hulls
+  std::optional<PhysicsProperties> physics;
+  std::vector<std::string> warnings;
+  CookedStats stats;
+};
+
+}  // namespace hullcook

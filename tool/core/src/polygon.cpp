@@ -1,0 +1,1 @@
+#include "hullcook/core/polygon.h"

@@ -1,0 +1,2 @@
+// Silhouette tracing from images (OpenCV).
+#pragma once

@@ -1,0 +1,1 @@
+#include "hullcook/trace/trace.h"
