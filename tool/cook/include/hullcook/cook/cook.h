@@ -1,0 +1,76 @@
+// The cooker's driver, shaped like gltfpack: a Settings struct with defaults and one cook()
+// call that the command line and the tests share.
+#pragma once
+
+#include "hullcook/cook/asset.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hullcook {
+
+// A length given either absolutely (in input units: pixels for images) or relative to the
+// radius R of the shape's minimum enclosing circle ("1%").
+struct Tolerance {
+  double value = 2.0;
+  bool relative = false;  // value is a fraction of R (0.01 for "1%")
+
+  // Parses "0.5", "2px" or "1%". Throws UsageError on anything else or a negative value.
+  static Tolerance parse(const std::string& text);
+  double resolve(double enclosing_radius) const { return relative ? value * enclosing_radius : value; }
+};
+
+struct Settings {
+  // Decomposition (issue 3).
+  Tolerance tau{2.0, false};  // [input units] or relative to R
+  std::string measure = "h1";  // sl | sp | h1 | h2
+  double sc = 0.1;             // Eq. 8 weight of the concavity of the cut's far end
+  double sd = 1.0;             // Eq. 8 weight of the cut's length
+  std::size_t max_pieces = 0;  // 0: no budget; else the finest level with at most this many
+  std::vector<Tolerance> lods;  // extra levels of detail (coarser τ), read off the tree
+
+  // Tracing (issue 4).
+  int alpha = 128;  // opaque where alpha >= this
+  std::optional<std::array<std::uint8_t, 3>> color_key;  // RGB traced as transparent
+  double min_blob_area = 4.0;                             // [px²]
+  double min_hole_area = 4.0;                             // [px²]
+  std::optional<double> simplify;                         // [px] default: τ / 4
+  std::uint64_t max_pixels = 64ull * 1000 * 1000;
+
+  // Pixels to world.
+  double pixels_per_unit = 1.0;
+  double pivot_u = 0.5, pivot_v = 0.5;  // normalised image coordinates of the origin
+  bool y_down = false;                  // keep image orientation (y down) in the output
+
+  // Engine constraints.
+  std::size_t max_verts = 8;    // per hull; 0 = unlimited
+  std::optional<double> weld;   // [output units] default kDefaultWeld
+
+  // Output.
+  std::optional<PhysicsProperties> physics;
+  bool draco = false;
+  unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
+};
+
+// Box2D 2.4's b2_linearSlop [m]: with 1 unit = 1 m, b2PolygonShape::Set welds vertices closer
+// than half of it, so hulls keep their vertices at least this far apart.
+inline constexpr double kDefaultWeld = 0.005;
+
+struct CookResult {
+  std::vector<CookedAsset> assets;  // sorted by name
+};
+
+// Cooks images (files or directories, recursing over images) and .poly files.
+// Throws InputError naming the file and the problem; nothing is written.
+CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings);
+
+// Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json).
+// Writes to a temporary file and renames it; throws OutputError or UsageError.
+void write_output(const CookResult& result, const std::filesystem::path& path,
+                  const Settings& settings);
+
+}  // namespace hullcook
