@@ -1,0 +1,38 @@
+// The glTF 2.0 writer (.gltf and .glb). The schema of what it writes is docs/gltf-extras.md.
+#pragma once
+
+#include "hullcook/cook/asset.h"
+
+#include <string>
+#include <vector>
+
+namespace hullcook {
+
+struct GltfOptions {
+  // true: a .glb (binary container, the buffer in its BIN chunk); false: a .gltf (JSON with the
+  // buffer embedded as a base64 data: URI, so the file is self-contained).
+  bool binary = false;
+  // true: the hull meshes are compressed with KHR_draco_mesh_compression (no uncompressed
+  // fallback, so the extension is listed in extensionsRequired). The 2D hulls in each node's
+  // extras are never compressed and stay authoritative.
+  bool draco = false;
+};
+
+// Half the thickness of the extruded hull meshes, as a fraction of the asset's size (the larger
+// side of the bounding box of its finest level's hulls): the prisms span z in [-h, +h] with
+// h = kGltfHalfThickness * size, so they are 1% of the asset's size thick.
+inline constexpr double kGltfHalfThickness = 0.005;
+
+// Quantization of the Draco-compressed positions [bits per coordinate]: the worst error of a
+// decoded vertex is (largest side of the mesh's bounding box) / (2^bits - 1) / 2 per coordinate.
+inline constexpr int kGltfDracoPositionBits = 16;
+
+// Returns the bytes of a glTF 2.0 file holding the assets: one root node per asset (name = asset
+// name) whose extras hold every level of its 2D hulls [output units], and one child node per hull
+// of its finest level, carrying a thin extruded prism mesh [output units] and the
+// KHR_physics_rigid_bodies and OMI_physics_body/OMI_physics_shape colliders that reference it.
+// Deterministic: the same assets always give the same bytes.
+// Throws OutputError if an asset holds a non-finite coordinate or its Draco encoding fails.
+std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options);
+
+}  // namespace hullcook
