@@ -1,0 +1,228 @@
+// The byte layout of the hull bundle (.hcb), version 1.0, exactly as formats/SPEC.md describes
+// it. Shared by the writer (tool/cook/src/bundle_writer.cpp) and the reader (runtime/): one
+// definition of every record, constant and formula. C++17, standard library only.
+//
+// Records are plain structs whose layout equals the file's (checked below); read them with
+// load() from a byte pointer, which is alignment- and aliasing-safe and compiles to plain loads.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "hullcook bundles are little-endian; big-endian hosts are not supported"
+#endif
+
+namespace hullcook::format {
+
+inline constexpr std::uint8_t kMagic[4] = {0x48, 0x43, 0x42, 0x1A};  // "HCB" Ctrl-Z
+inline constexpr std::uint8_t kVersionMajor = 1;
+inline constexpr std::uint8_t kVersionMinor = 0;
+
+// Every section starts at a multiple of this [bytes]; so must the buffer holding the bundle.
+inline constexpr std::size_t kAlignment = 4;
+
+// Header flags (BundleHeader::flags).
+inline constexpr std::uint16_t kBundleHasPhysics = 1u << 0;
+inline constexpr std::uint16_t kBundleKnownFlags = kBundleHasPhysics;
+// Asset flags (AssetRecord::flags).
+inline constexpr std::uint16_t kAssetHasPhysics = 1u << 0;
+inline constexpr std::uint16_t kAssetKnownFlags = kAssetHasPhysics;
+// Physics flags (PhysicsRecord::flags).
+inline constexpr std::uint32_t kPhysicsSensor = 1u << 0;
+inline constexpr std::uint32_t kPhysicsKnownFlags = kPhysicsSensor;
+
+// A hash slot holding no asset.
+inline constexpr std::uint32_t kEmptySlot = 0xFFFFFFFFu;
+
+// A hull has at least this many vertices.
+inline constexpr std::uint32_t kMinHullVertices = 3;
+
+struct BundleHeader {
+  std::uint8_t magic[4];
+  std::uint8_t version_major;
+  std::uint8_t version_minor;
+  std::uint16_t flags;
+  std::uint32_t total_size;  // [bytes] header included
+  std::uint32_t checksum;    // CRC-32 of bytes [sizeof(BundleHeader), total_size)
+  std::uint32_t asset_count;
+  std::uint32_t slot_count;
+  std::uint32_t level_count;
+  std::uint32_t hull_count;
+  std::uint32_t vertex_count;
+  std::uint32_t assets_offset;   // [bytes] from the start of the bundle
+  std::uint32_t physics_offset;  // 0 without kBundleHasPhysics
+  std::uint32_t slots_offset;
+  std::uint32_t levels_offset;
+  std::uint32_t hulls_offset;
+  std::uint32_t vertices_offset;
+  std::uint32_t strings_offset;  // the strings run to total_size
+};
+
+struct AssetRecord {
+  std::uint32_t name_offset;  // [bytes] inside the strings section; a 0 byte follows the name
+  std::uint16_t name_length;  // [bytes] without the 0 byte, >= 1
+  std::uint16_t flags;
+  std::uint32_t first_level;
+  std::uint16_t image_width;   // [px] 0 when not an image
+  std::uint16_t image_height;  // [px]
+  float pixels_per_unit;       // [px / output unit]
+  float pivot_u;               // normalised image x of the output origin
+  float pivot_v;               // normalised image y of the output origin (0 = top)
+  float quant_step;            // [output units] per quantum
+};
+
+struct PhysicsRecord {
+  float density;  // [kg / output unit²]
+  float friction;
+  float restitution;
+  std::uint16_t category_bits;
+  std::uint16_t mask_bits;
+  std::uint32_t flags;
+};
+
+struct LevelRecord {
+  float tau;  // [output units]
+  std::uint32_t first_hull;
+};
+
+struct HullRecord {
+  std::uint32_t first_vertex;
+  std::int32_t base_x;  // [quanta]
+  std::int32_t base_y;  // [quanta]
+};
+
+struct VertexRecord {
+  std::int16_t dx;  // [quanta] from the hull's base
+  std::int16_t dy;
+};
+
+#define HULLCOOK_CHECK_FIELD(record, field, offset) \
+  static_assert(offsetof(record, field) == (offset), #record "::" #field " is at " #offset)
+
+static_assert(sizeof(BundleHeader) == 64);
+HULLCOOK_CHECK_FIELD(BundleHeader, version_major, 4);
+HULLCOOK_CHECK_FIELD(BundleHeader, version_minor, 5);
+HULLCOOK_CHECK_FIELD(BundleHeader, flags, 6);
+HULLCOOK_CHECK_FIELD(BundleHeader, total_size, 8);
+HULLCOOK_CHECK_FIELD(BundleHeader, checksum, 12);
+HULLCOOK_CHECK_FIELD(BundleHeader, asset_count, 16);
+HULLCOOK_CHECK_FIELD(BundleHeader, slot_count, 20);
+HULLCOOK_CHECK_FIELD(BundleHeader, level_count, 24);
+HULLCOOK_CHECK_FIELD(BundleHeader, hull_count, 28);
+HULLCOOK_CHECK_FIELD(BundleHeader, vertex_count, 32);
+HULLCOOK_CHECK_FIELD(BundleHeader, assets_offset, 36);
+HULLCOOK_CHECK_FIELD(BundleHeader, physics_offset, 40);
+HULLCOOK_CHECK_FIELD(BundleHeader, slots_offset, 44);
+HULLCOOK_CHECK_FIELD(BundleHeader, levels_offset, 48);
+HULLCOOK_CHECK_FIELD(BundleHeader, hulls_offset, 52);
+HULLCOOK_CHECK_FIELD(BundleHeader, vertices_offset, 56);
+HULLCOOK_CHECK_FIELD(BundleHeader, strings_offset, 60);
+
+static_assert(sizeof(AssetRecord) == 32);
+HULLCOOK_CHECK_FIELD(AssetRecord, name_length, 4);
+HULLCOOK_CHECK_FIELD(AssetRecord, flags, 6);
+HULLCOOK_CHECK_FIELD(AssetRecord, first_level, 8);
+HULLCOOK_CHECK_FIELD(AssetRecord, image_width, 12);
+HULLCOOK_CHECK_FIELD(AssetRecord, image_height, 14);
+HULLCOOK_CHECK_FIELD(AssetRecord, pixels_per_unit, 16);
+HULLCOOK_CHECK_FIELD(AssetRecord, pivot_u, 20);
+HULLCOOK_CHECK_FIELD(AssetRecord, pivot_v, 24);
+HULLCOOK_CHECK_FIELD(AssetRecord, quant_step, 28);
+
+static_assert(sizeof(PhysicsRecord) == 20);
+HULLCOOK_CHECK_FIELD(PhysicsRecord, friction, 4);
+HULLCOOK_CHECK_FIELD(PhysicsRecord, restitution, 8);
+HULLCOOK_CHECK_FIELD(PhysicsRecord, category_bits, 12);
+HULLCOOK_CHECK_FIELD(PhysicsRecord, mask_bits, 14);
+HULLCOOK_CHECK_FIELD(PhysicsRecord, flags, 16);
+
+static_assert(sizeof(LevelRecord) == 8);
+HULLCOOK_CHECK_FIELD(LevelRecord, first_hull, 4);
+static_assert(sizeof(HullRecord) == 12);
+HULLCOOK_CHECK_FIELD(HullRecord, base_x, 4);
+HULLCOOK_CHECK_FIELD(HullRecord, base_y, 8);
+static_assert(sizeof(VertexRecord) == 4);
+HULLCOOK_CHECK_FIELD(VertexRecord, dy, 2);
+
+#undef HULLCOOK_CHECK_FIELD
+
+static_assert(std::is_trivially_copyable_v<BundleHeader> &&
+              std::is_trivially_copyable_v<AssetRecord> &&
+              std::is_trivially_copyable_v<PhysicsRecord> &&
+              std::is_trivially_copyable_v<LevelRecord> &&
+              std::is_trivially_copyable_v<HullRecord> &&
+              std::is_trivially_copyable_v<VertexRecord>);
+static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
+              "the bundle stores IEEE-754 binary32");
+
+// Reads a record of type T at bytes (no alignment or aliasing assumption).
+template <typename T>
+inline T load(const unsigned char* bytes) noexcept {
+  T value;
+  std::memcpy(&value, bytes, sizeof(T));
+  return value;
+}
+
+// 32-bit FNV-1a of a name's bytes: the hash of the name table (SPEC §6).
+inline std::uint32_t name_hash(const char* name, std::size_t length) noexcept {
+  std::uint32_t hash = 2166136261u;
+  for (std::size_t i = 0; i < length; ++i) {
+    hash ^= static_cast<unsigned char>(name[i]);
+    hash *= 16777619u;
+  }
+  return hash;
+}
+
+// Whether a hull's vertices (count VertexRecords at vertices) are strictly convex and
+// counter-clockwise on the integer grid (SPEC §8): every turn strictly left, and the edges' x and
+// y components each change sign at most twice, i.e. the boundary winds exactly once. Exact:
+// within-hull differences fit 17 bits, their cross products 35.
+inline bool hull_is_strictly_convex(const unsigned char* vertices, std::uint32_t count) noexcept {
+  if (count < kMinHullVertices) return false;
+  auto vertex = [&](std::uint32_t i) { return load<VertexRecord>(vertices + 4 * (i % count)); };
+  int x_sign_changes = 0, y_sign_changes = 0;
+  int last_x_sign = 0, last_y_sign = 0, first_x_sign = 0, first_y_sign = 0;
+  auto track = [](std::int64_t component, int& last, int& first, int& changes) {
+    const int sign = (component > 0) - (component < 0);
+    if (sign == 0) return;
+    if (last != 0 && sign != last) ++changes;
+    if (first == 0) first = sign;
+    last = sign;
+  };
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const VertexRecord a = vertex(i), b = vertex(i + 1), c = vertex(i + 2);
+    const std::int64_t ex = std::int64_t{b.dx} - a.dx, ey = std::int64_t{b.dy} - a.dy;
+    const std::int64_t fx = std::int64_t{c.dx} - b.dx, fy = std::int64_t{c.dy} - b.dy;
+    if (ex * fy - ey * fx <= 0) return false;
+    track(ex, last_x_sign, first_x_sign, x_sign_changes);
+    track(ey, last_y_sign, first_y_sign, y_sign_changes);
+  }
+  // Close the cycle: the last edge's sign against the first edge's.
+  if (last_x_sign != 0 && first_x_sign != 0 && last_x_sign != first_x_sign) ++x_sign_changes;
+  if (last_y_sign != 0 && first_y_sign != 0 && last_y_sign != first_y_sign) ++y_sign_changes;
+  return x_sign_changes <= 2 && y_sign_changes <= 2;
+}
+
+// The slot count a writer uses for asset_count assets: load factor <= 0.75, one slot always empty.
+inline constexpr std::uint32_t writer_slot_count(std::uint32_t asset_count) noexcept {
+  return asset_count + asset_count / 3 + 1;
+}
+
+// The quantization error bound E of an asset (SPEC §9) [output units]: 1 % of the finest τ or
+// 1/64 px, whichever is larger.
+inline double quantization_error_bound(double finest_tau, double pixels_per_unit) noexcept {
+  return std::fmax(0.01 * finest_tau, 1.0 / (64.0 * pixels_per_unit));
+}
+
+// A quantized coordinate in output units (SPEC §8): exact integer sum, one rounding to double.
+inline double dequantize(std::int32_t base, std::int16_t delta, float quant_step) noexcept {
+  return static_cast<double>(static_cast<std::int64_t>(base) + delta) *
+         static_cast<double>(quant_step);
+}
+
+}  // namespace hullcook::format
