@@ -61,7 +61,7 @@ struct Settings {
 inline constexpr double kDefaultWeld = 0.005;
 
 struct CookResult {
-  std::vector<CookedAsset> assets;  // sorted by name
+  std::vector<CookedAsset> assets;  // in input order; directories expand in sorted order
 };
 
 // Cooks images (files or directories, recursing over images) and .poly files.

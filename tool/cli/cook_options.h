@@ -1,0 +1,28 @@
+// The options shared by every command that cooks (cook, preview, decompose-like uses).
+#pragma once
+
+#include "hullcook/cook/cook.h"
+
+#include <CLI/CLI.hpp>
+
+namespace hullcook::cli {
+
+// Options that need parsing after CLI11 is done; see finish_cook_options().
+struct CookOptions {
+  std::string tau = "2";
+  std::string lods;
+  std::string color_key;
+  std::string pivot = "0.5,0.5";
+  double weld = -1;
+  double simplify = -1;
+  PhysicsProperties physics;
+};
+
+// Registers the decomposition, tracing, world-mapping, engine and physics options on command,
+// writing into settings and options.
+void add_cook_options(CLI::App& command, Settings& settings, CookOptions& options);
+
+// After parsing: converts the textual options into settings. Throws UsageError.
+void finish_cook_options(const CLI::App& command, Settings& settings, const CookOptions& options);
+
+}  // namespace hullcook::cli
