@@ -1,0 +1,375 @@
+// Ring nesting and topology-preserving simplification (Douglas-Peucker with an intersection
+// check: any simplified edge that crosses or touches another is refined until none does).
+#include "rings.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+namespace hullcook::trace_detail {
+namespace {
+
+// Distances below this [px] count as touching. Traced rings are at least ~1/512 px apart (the
+// crossing points of different edges), so this only catches real contacts and rounding.
+constexpr double kTouch = 1e-9;
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  Vec2 ab = b - a;
+  double length2 = glm::dot(ab, ab);
+  double t = length2 > 0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * ab));
+}
+
+bool segments_touch(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (std::max(a.x, b.x) + kTouch < std::min(c.x, d.x) ||
+      std::max(c.x, d.x) + kTouch < std::min(a.x, b.x) ||
+      std::max(a.y, b.y) + kTouch < std::min(c.y, d.y) ||
+      std::max(c.y, d.y) + kTouch < std::min(a.y, b.y)) {
+    return false;
+  }
+  double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+  if (((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0)) && ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0))) {
+    return true;
+  }
+  return point_segment_distance(a, c, d) < kTouch || point_segment_distance(b, c, d) < kTouch ||
+         point_segment_distance(c, a, b) < kTouch || point_segment_distance(d, a, b) < kTouch;
+}
+
+// One edge of a simplified ring: from original vertex `from` to original vertex `to` (cyclic).
+struct Segment {
+  int ring;
+  int from;
+  int to;
+};
+
+class Simplifier {
+ public:
+  Simplifier(const std::vector<Ring>& rings, double eps) : rings_(rings), eps_(eps) {
+    keep_.resize(rings.size());
+    for (std::size_t r = 0; r < rings.size(); ++r) start(static_cast<int>(r));
+  }
+
+  // Refines until no two simplified edges cross or touch. Returns false if it gave up on some
+  // rings and restored them whole (then the caller loops again).
+  void untangle() {
+    for (int round = 0;; ++round) {
+      std::vector<Segment> segments = all_segments();
+      std::vector<std::pair<int, int>> touching = touching_pairs(segments);
+      if (touching.empty()) return;
+      std::vector<char> refine(segments.size(), 0);
+      for (auto [s, t] : touching) {
+        bool s_splits = interior_count(segments[s]) > 0, t_splits = interior_count(segments[t]) > 0;
+        if (round >= kMaxRounds || (!s_splits && !t_splits)) {
+          restore(segments[s].ring);
+          restore(segments[t].ring);
+          continue;
+        }
+        if (s_splits) refine[s] = 1;
+        if (t_splits) refine[t] = 1;
+      }
+      for (std::size_t s = 0; s < segments.size(); ++s) {
+        if (refine[s]) split(segments[s]);
+      }
+    }
+  }
+
+  std::vector<Ring> current() const {
+    std::vector<Ring> result(rings_.size());
+    for (std::size_t r = 0; r < rings_.size(); ++r) {
+      for (std::size_t i = 0; i < rings_[r].size(); ++i) {
+        if (keep_[r][i]) result[r].push_back(rings_[r][i]);
+      }
+    }
+    return result;
+  }
+
+  void restore(int ring) { std::fill(keep_[ring].begin(), keep_[ring].end(), 1); }
+
+ private:
+  static constexpr int kMaxRounds = 64;
+
+  int size(int ring) const { return static_cast<int>(rings_[ring].size()); }
+  int interior_count(const Segment& s) const {
+    return (s.to - s.from - 1 + size(s.ring)) % size(s.ring);
+  }
+
+  void start(int r) {
+    const Ring& ring = rings_[r];
+    const int n = size(r);
+    keep_[r].assign(n, eps_ > 0 ? 0 : 1);
+    if (eps_ <= 0 || n <= 3) {
+      std::fill(keep_[r].begin(), keep_[r].end(), 1);
+      return;
+    }
+    int a = 0;
+    for (int i = 1; i < n; ++i) {
+      if (ring[i].x < ring[a].x || (ring[i].x == ring[a].x && ring[i].y < ring[a].y)) a = i;
+    }
+    int b = a;
+    double farthest = -1;
+    for (int i = 0; i < n; ++i) {
+      double d = glm::length(ring[i] - ring[a]);
+      if (d > farthest) farthest = d, b = i;
+    }
+    keep_[r][a] = keep_[r][b] = 1;
+    douglas_peucker(r, a, b);
+    douglas_peucker(r, b, a);
+    if (std::count(keep_[r].begin(), keep_[r].end(), 1) < 3) {
+      // Never collapse a ring: keep its vertex farthest from the chord.
+      int m = farthest_interior({r, a, b});
+      int m2 = farthest_interior({r, b, a});
+      auto distance = [&](int i) { return point_segment_distance(ring[i], ring[a], ring[b]); };
+      keep_[r][(m2 >= 0 && (m < 0 || distance(m2) > distance(m))) ? m2 : m] = 1;
+    }
+  }
+
+  // The interior vertex of s farthest from its chord, or -1 if s is an original edge.
+  int farthest_interior(const Segment& s) const {
+    const Ring& ring = rings_[s.ring];
+    const int n = size(s.ring);
+    int best = -1;
+    double best_distance = -1;
+    for (int i = (s.from + 1) % n; i != s.to; i = (i + 1) % n) {
+      double d = point_segment_distance(ring[i], ring[s.from], ring[s.to]);
+      if (d > best_distance) best_distance = d, best = i;
+    }
+    return best;
+  }
+
+  void douglas_peucker(int r, int from, int to) {
+    std::vector<std::pair<int, int>> stack{{from, to}};
+    while (!stack.empty()) {
+      auto [i, j] = stack.back();
+      stack.pop_back();
+      int m = farthest_interior({r, i, j});
+      if (m < 0) continue;
+      if (point_segment_distance(rings_[r][m], rings_[r][i], rings_[r][j]) <= eps_) continue;
+      keep_[r][m] = 1;
+      stack.emplace_back(i, m);
+      stack.emplace_back(m, j);
+    }
+  }
+
+  // Splits s at its farthest interior vertex; the halves are re-simplified, because the
+  // vertices were within eps of the old chord, not necessarily of the new ones.
+  void split(const Segment& s) {
+    int m = farthest_interior(s);
+    if (m < 0 || keep_[s.ring][m]) return;
+    keep_[s.ring][m] = 1;
+    douglas_peucker(s.ring, s.from, m);
+    douglas_peucker(s.ring, m, s.to);
+  }
+
+  std::vector<Segment> all_segments() const {
+    std::vector<Segment> segments;
+    for (std::size_t r = 0; r < rings_.size(); ++r) {
+      std::vector<int> kept;
+      for (int i = 0; i < size(static_cast<int>(r)); ++i) {
+        if (keep_[r][i]) kept.push_back(i);
+      }
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        segments.push_back({static_cast<int>(r), kept[k], kept[(k + 1) % kept.size()]});
+      }
+    }
+    return segments;
+  }
+
+  bool adjacent(const Segment& s, const Segment& t) const {
+    return s.ring == t.ring && (s.to == t.from || t.to == s.from);
+  }
+
+  bool touch(const Segment& s, const Segment& t) const {
+    Vec2 a = rings_[s.ring][s.from], b = rings_[s.ring][s.to];
+    Vec2 c = rings_[t.ring][t.from], d = rings_[t.ring][t.to];
+    if (!adjacent(s, t)) return segments_touch(a, b, c, d);
+    // Consecutive edges share a vertex; they are bad only if one folds back onto the other.
+    if (s.to == t.from && t.to == s.from) return true;  // a two-vertex ring
+    if (s.to == t.from) {
+      return point_segment_distance(d, a, b) < kTouch || point_segment_distance(a, c, d) < kTouch;
+    }
+    return point_segment_distance(b, c, d) < kTouch || point_segment_distance(c, a, b) < kTouch;
+  }
+
+  // Pairs of segments that cross or touch, found through a uniform grid (each segment is
+  // entered in the cells its path crosses, with a small margin).
+  std::vector<std::pair<int, int>> touching_pairs(const std::vector<Segment>& segments) const {
+    std::vector<std::pair<int, int>> result;
+    if (segments.empty()) return result;
+    Vec2 low{std::numeric_limits<double>::max()}, high{std::numeric_limits<double>::lowest()};
+    for (const Ring& ring : rings_) {
+      for (Vec2 p : ring) low = glm::min(low, p), high = glm::max(high, p);
+    }
+    Vec2 extent = high - low;
+    double cell = std::max({4.0, extent.x / 1024.0, extent.y / 1024.0});
+    int columns = static_cast<int>(extent.x / cell) + 2,
+        rows = static_cast<int>(extent.y / cell) + 2;
+    std::vector<std::vector<int>> grid(static_cast<std::size_t>(columns) * rows);
+    auto clamp_column = [&](double x) {
+      return std::clamp(static_cast<int>(std::floor((x - low.x) / cell)), 0, columns - 1);
+    };
+    auto clamp_row = [&](double y) {
+      return std::clamp(static_cast<int>(std::floor((y - low.y) / cell)), 0, rows - 1);
+    };
+    const double margin = 1e-6;
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+      Vec2 a = rings_[segments[s].ring][segments[s].from];
+      Vec2 b = rings_[segments[s].ring][segments[s].to];
+      if (a.x > b.x) std::swap(a, b);
+      for (int column = clamp_column(a.x - margin); column <= clamp_column(b.x + margin);
+           ++column) {
+        double x0 = std::max(a.x, low.x + column * cell),
+               x1 = std::min(b.x, low.x + (column + 1) * cell);
+        double y0 = a.y, y1 = b.y;
+        if (b.x - a.x > 0) {
+          y0 = a.y + (b.y - a.y) * (std::clamp(x0, a.x, b.x) - a.x) / (b.x - a.x);
+          y1 = a.y + (b.y - a.y) * (std::clamp(x1, a.x, b.x) - a.x) / (b.x - a.x);
+        }
+        if (y0 > y1) std::swap(y0, y1);
+        for (int row = clamp_row(y0 - margin); row <= clamp_row(y1 + margin); ++row) {
+          grid[static_cast<std::size_t>(row) * columns + column].push_back(static_cast<int>(s));
+        }
+      }
+    }
+    for (const std::vector<int>& bucket : grid) {
+      for (std::size_t i = 0; i < bucket.size(); ++i) {
+        for (std::size_t j = i + 1; j < bucket.size(); ++j) {
+          if (touch(segments[bucket[i]], segments[bucket[j]])) {
+            result.emplace_back(bucket[i], bucket[j]);
+          }
+        }
+      }
+    }
+    return result;
+  }
+
+  const std::vector<Ring>& rings_;
+  double eps_;
+  std::vector<std::vector<char>> keep_;
+};
+
+// Drops vertices on the straight line through their neighbours (within rounding), which does not
+// move the outline; a ring keeps at least 3 vertices.
+Ring without_collinear(Ring ring) {
+  bool changed = true;
+  while (changed && ring.size() > 3) {
+    changed = false;
+    Ring kept;
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec2 previous = kept.empty() ? ring[(i + n - 1) % n] : kept.back();
+      Vec2 next = ring[(i + 1) % n];
+      Vec2 in = ring[i] - previous, out = next - ring[i];
+      bool straight = std::abs(cross(in, out)) <= 1e-12 * glm::length(in) * glm::length(out) &&
+                      glm::dot(in, out) > 0;
+      if (straight && n - (i - kept.size()) > 3) {
+        changed = true;
+        continue;
+      }
+      kept.push_back(ring[i]);
+    }
+    ring = std::move(kept);
+  }
+  return ring;
+}
+
+}  // namespace
+
+double signed_area(const Ring& ring) {
+  double twice = 0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) twice += cross(ring[i], ring[(i + 1) % n]);
+  return twice / 2;
+}
+
+std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
+  const int count = static_cast<int>(rings.size());
+  std::vector<int> parents(count, -1);
+  if (count == 0) return parents;
+  double low_y = std::numeric_limits<double>::max(), high_y = std::numeric_limits<double>::lowest();
+  std::vector<int> leftmost(count, 0);
+  for (int r = 0; r < count; ++r) {
+    const Ring& ring = rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      low_y = std::min(low_y, ring[i].y), high_y = std::max(high_y, ring[i].y);
+      const Vec2& best = ring[leftmost[r]];
+      if (ring[i].x < best.x || (ring[i].x == best.x && ring[i].y < best.y))
+        leftmost[r] = static_cast<int>(i);
+    }
+  }
+  // Edges bucketed by the unit rows their y range overlaps.
+  const int rows = static_cast<int>(std::floor(high_y - low_y)) + 1;
+  std::vector<std::vector<std::pair<int, int>>> buckets(rows);
+  for (int r = 0; r < count; ++r) {
+    for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
+      double y0 = rings[r][i].y, y1 = rings[r][(i + 1) % n].y;
+      int first = static_cast<int>(std::floor(std::min(y0, y1) - low_y));
+      int last = static_cast<int>(std::floor(std::max(y0, y1) - low_y));
+      for (int row = first; row <= last; ++row) buckets[row].emplace_back(r, static_cast<int>(i));
+    }
+  }
+  std::vector<int> order(count);
+  for (int r = 0; r < count; ++r) order[r] = r;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    Vec2 pa = rings[a][leftmost[a]], pb = rings[b][leftmost[b]];
+    return pa.x != pb.x ? pa.x < pb.x : (pa.y != pb.y ? pa.y < pb.y : a < b);
+  });
+  // The first ring a leftward ray from a ring's leftmost vertex meets bounds the face the ring
+  // lies in: it is the parent if its orientation differs (it encloses that face), else a sibling.
+  for (int r : order) {
+    Vec2 p = rings[r][leftmost[r]];
+    int hit = -1;
+    double hit_x = std::numeric_limits<double>::lowest();
+    for (auto [s, i] : buckets[static_cast<int>(std::floor(p.y - low_y))]) {
+      if (s == r) continue;
+      const Ring& ring = rings[s];
+      Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
+      double x = a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
+      if (x < p.x && x > hit_x) hit_x = x, hit = s;
+    }
+    if (hit < 0) continue;
+    bool r_outer = signed_area(rings[r]) > 0, hit_outer = signed_area(rings[hit]) > 0;
+    parents[r] = r_outer != hit_outer ? hit : parents[hit];
+  }
+  return parents;
+}
+
+std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
+                                 double eps) {
+  Simplifier simplifier(rings, eps);
+  std::vector<Ring> result;
+  while (true) {
+    simplifier.untangle();
+    result = simplifier.current();
+    // Disjoint rings can still have changed nesting (a small ring swallowed whole by a
+    // neighbour's chord) or a sliver its orientation: restore those rings and check again.
+    bool restored = false;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      if ((signed_area(result[r]) > 0) != (signed_area(rings[r]) > 0)) {
+        simplifier.restore(static_cast<int>(r));
+        restored = true;
+      }
+    }
+    if (!restored) {
+      std::vector<int> now = nesting_parents(result);
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        if (now[r] == parents[r]) continue;
+        simplifier.restore(static_cast<int>(r));
+        if (now[r] >= 0) simplifier.restore(now[r]);
+        if (parents[r] >= 0) simplifier.restore(parents[r]);
+        restored = true;
+      }
+    }
+    if (!restored) break;
+  }
+  for (Ring& ring : result) ring = without_collinear(std::move(ring));
+  return result;
+}
+
+}  // namespace hullcook::trace_detail

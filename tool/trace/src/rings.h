@@ -1,0 +1,25 @@
+// Internal to hullcook_trace: ring geometry shared by the tracer and the simplifier.
+#pragma once
+
+#include "hullcook/core/polygon.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace hullcook::trace_detail {
+
+// Shoelace area [px²]: positive for outer rings, negative for holes (see trace.h).
+double signed_area(const Ring& ring);
+
+// For rings that neither cross nor touch each other: the index of the ring immediately
+// enclosing each ring, or -1. Uses each ring's orientation sign (outer > 0, hole < 0).
+std::vector<int> nesting_parents(const std::vector<Ring>& rings);
+
+// Simplifies every ring with error bound eps [px] (every vertex of the original ring lies within
+// eps of the simplified ring), keeping the rings simple, disjoint and nested as before, each with
+// at least 3 vertices and its orientation. parents is nesting_parents(rings).
+// Also removes collinear vertices (which does not move the outline). eps = 0 only does that.
+std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
+                                 double eps);
+
+}  // namespace hullcook::trace_detail
