@@ -73,7 +73,8 @@ struct Violations {
   bool any = false;
 };
 
-// Candidate edges to remove, for every way in which hull breaks the limits.
+// Edges whose removal may mend a local violation: two vertices closer than the weld distance, or
+// a vertex (nearly) collinear with its neighbours.
 Violations find_violations(const Ring& hull, const EngineLimits& limits) {
   Violations found;
   std::size_t n = hull.size();
@@ -94,8 +95,6 @@ Violations find_violations(const Ring& hull, const EngineLimits& limits) {
       }
     }
   }
-  bool local = std::find(wanted.begin(), wanted.end(), true) != wanted.end();
-  if (!local && limits.max_verts != 0 && n > limits.max_verts) wanted.assign(n, true);
   for (std::size_t i = 0; i < n; ++i) {
     if (wanted[i]) found.edges.push_back(i);
   }
@@ -139,15 +138,33 @@ class HullFitter {
   HullFitter(const Region& component, double tau, const EngineLimits& limits)
       : component_(component), tau_(tau), limits_(limits) {}
 
-  // Grows hull edge by edge until it meets the limits; nullopt when no growth keeps the bounds.
+  // Grows hull until it meets the limits; nullopt when no growth keeps the bounds.
   std::optional<Ring> fit(Ring hull) {
-    std::vector<double> allowed;
+    allowed_.clear();
     for_each_component_vertex(
-        [&](Vec2 v) { allowed.push_back(std::max(tau_, distance_to_hull_boundary(v, hull))); });
+        [&](Vec2 v) { allowed_.push_back(std::max(tau_, distance_to_hull_boundary(v, hull))); });
+    // Reducing the vertex count creates new apexes, which may need welding again.
+    for (int round = 0; round < 4; ++round) {
+      std::optional<Ring> mended = mend_local_violations(std::move(hull));
+      if (!mended) return std::nullopt;
+      hull = std::move(*mended);
+      if (limits_.max_verts == 0 || hull.size() <= limits_.max_verts) return hull;
+      std::optional<Ring> reduced = reduce_vertex_count(hull);
+      if (!reduced) return std::nullopt;
+      hull = std::move(*reduced);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  bool too_small(const Ring& hull) const {
+    return hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * limits_.weld * limits_.weld;
+  }
+
+  // Removes, one at a time, the cheapest edge that mends a weld or collinearity violation.
+  std::optional<Ring> mend_local_violations(Ring hull) const {
     while (true) {
-      if (hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * limits_.weld * limits_.weld) {
-        return std::nullopt;
-      }
+      if (too_small(hull)) return std::nullopt;
       Violations violations = find_violations(hull, limits_);
       if (!violations.any) return hull;
       struct Candidate {
@@ -167,9 +184,11 @@ class HullFitter {
       });
       bool grown = false;
       for (const Candidate& candidate : candidates) {
+        std::size_t n = hull.size();
         Ring next = without_edge(hull, candidate.edge, candidate.apex);
-        if (growth_within_bounds(hull, candidate.edge, candidate.apex) &&
-            component_vertices_within(next, allowed)) {
+        if (segment_within_tau(hull[candidate.edge], candidate.apex) &&
+            segment_within_tau(candidate.apex, hull[(candidate.edge + 1) % n]) &&
+            component_vertices_within(next)) {
           hull = std::move(next);
           grown = true;
           break;
@@ -179,7 +198,70 @@ class HullFitter {
     }
   }
 
- private:
+  // Keeps as few of the hull's edge lines as possible (at most max_verts) so that the polygon
+  // they bound stays within tau of the component. From every starting edge, each kept line is
+  // followed by the farthest line whose meeting point with it is still within tau: greedy
+  // farthest reach is optimal along a chain, and trying every start closes the cycle.
+  std::optional<Ring> reduce_vertex_count(const Ring& hull) {
+    std::size_t m = hull.size();
+    apex_cache_.assign(m * m, ApexState::unknown);
+    apex_points_.assign(m * m, Vec2{0, 0});
+    std::optional<Ring> best;
+    for (std::size_t start = 0; start < m; ++start) {
+      std::vector<std::size_t> kept{start};
+      std::size_t current = start;
+      bool closed = false;
+      while (kept.size() <= limits_.max_verts) {
+        std::size_t farthest = current + 1;
+        for (std::size_t j = current + 2; j <= start + m; ++j) {
+          if (!apex_within_tau(hull, current % m, j % m)) break;
+          farthest = j;
+        }
+        if (farthest == start + m) {
+          closed = true;
+          break;
+        }
+        kept.push_back(farthest);
+        current = farthest;
+      }
+      if (!closed || kept.size() > limits_.max_verts || kept.size() < 3) continue;
+      if (best && best->size() <= kept.size()) continue;
+      Ring polygon;
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        std::size_t i = kept[k] % m, j = kept[(k + 1) % kept.size()] % m;
+        polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
+      }
+      if (component_vertices_within(polygon)) best = std::move(polygon);
+    }
+    return best;
+  }
+
+  enum class ApexState : unsigned char { unknown, within, beyond };
+
+  // Whether the lines of edges i and j (j after i, counter-clockwise, not adjacent) meet at a
+  // point such that the region added between them stays within tau of the component.
+  bool apex_within_tau(const Ring& hull, std::size_t i, std::size_t j) {
+    std::size_t m = hull.size();
+    ApexState& state = apex_cache_[i * m + j];
+    if (state == ApexState::unknown) {
+      state = ApexState::beyond;
+      Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
+      Vec2 first = b - a, second = d - c;
+      double denominator = cross(first, second);
+      if (denominator > 0) {
+        double t = cross(c - a, second) / denominator;
+        Vec2 apex = a + first * t;
+        bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t);
+        if (ahead && distance_to_component(apex, component_) <= tau_ &&
+            segment_within_tau(b, apex) && segment_within_tau(apex, c)) {
+          state = ApexState::within;
+          apex_points_[i * m + j] = apex;
+        }
+      }
+    }
+    return state == ApexState::within;
+  }
+
   template <typename Visit>
   void for_each_component_vertex(Visit visit) const {
     for (Vec2 v : component_.outer) visit(v);
@@ -188,26 +270,24 @@ class HullFitter {
     }
   }
 
-  // The added triangle's new sides stay within tau of the component (sampled at tau/4).
-  bool growth_within_bounds(const Ring& hull, std::size_t edge, Vec2 apex) const {
-    Vec2 a = hull[edge], b = hull[(edge + 1) % hull.size()];
+  // Every point of the segment stays within tau of the component (sampled at tau/4; the ends
+  // are checked by the caller or are old hull vertices).
+  bool segment_within_tau(Vec2 from, Vec2 to) const {
     double step = tau_ > 0 ? tau_ / 4 : 1.0;
-    for (auto [from, to] : {std::pair{a, apex}, std::pair{apex, b}}) {
-      double length = glm::length(to - from);
-      int samples = std::clamp(static_cast<int>(std::ceil(length / step)), 1, 256);
-      for (int s = 1; s < samples; ++s) {
-        Vec2 p = from + (to - from) * (static_cast<double>(s) / samples);
-        if (distance_to_component(p, component_) > tau_) return false;
-      }
+    double length = glm::length(to - from);
+    int samples = std::clamp(static_cast<int>(std::ceil(length / step)), 1, 64);
+    for (int s = 1; s < samples; ++s) {
+      Vec2 p = from + (to - from) * (static_cast<double>(s) / samples);
+      if (distance_to_component(p, component_) > tau_) return false;
     }
     return true;
   }
 
-  bool component_vertices_within(const Ring& hull, const std::vector<double>& allowed) const {
+  bool component_vertices_within(const Ring& hull) const {
     std::size_t k = 0;
     bool ok = true;
     for_each_component_vertex([&](Vec2 v) {
-      if (ok && distance_to_hull_boundary(v, hull) > allowed[k] * (1 + 1e-12)) ok = false;
+      if (ok && distance_to_hull_boundary(v, hull) > allowed_[k] * (1 + 1e-12)) ok = false;
       ++k;
     });
     return ok;
@@ -216,6 +296,9 @@ class HullFitter {
   const Region& component_;
   double tau_;
   EngineLimits limits_;
+  std::vector<double> allowed_;  // per component vertex: max(tau, distance before)
+  std::vector<ApexState> apex_cache_;
+  std::vector<Vec2> apex_points_;
 };
 
 bool is_convex_without_holes(const CookedPiece& piece) {
@@ -283,6 +366,7 @@ class Constrainer {
 
 bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
   if (hull.size() < 3 || signed_area(hull) <= 0) return false;
+  if (limits.max_verts != 0 && hull.size() > limits.max_verts) return false;
   for (std::size_t i = 0; i < hull.size(); ++i) {
     if (turn_height(hull, i) <= 0) return false;
   }
