@@ -1,0 +1,492 @@
+// The .hcb writer and reader together: round trips within the quantization bound, convexity after
+// quantization, golden files, and rejection of every truncation, flipped byte and mutation.
+#include "synthetic_assets.h"
+
+#include "hullcook/cook/bundle_writer.h"
+#include "hullcook/core/error.h"
+#include "hullcook/format/bundle_layout.h"
+#include "hullcook/format/crc32.h"
+#include "hullcook/runtime.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <sstream>
+
+namespace hullcook {
+namespace {
+
+using runtime::Bundle;
+using runtime::Status;
+namespace fs = std::filesystem;
+
+const fs::path kGoldenDir = fs::path(HULLCOOK_SOURCE_DIR) / "tests/formats/golden";
+
+// A 4-byte aligned copy of bytes (std::string's buffer is, but copies made here are explicit).
+struct AlignedBytes {
+  explicit AlignedBytes(const std::string& bytes) : words((bytes.size() + 3) / 4 + 1) {
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    size = bytes.size();
+  }
+  const void* data() const { return words.data(); }
+  std::vector<std::uint32_t> words;
+  std::size_t size = 0;
+};
+
+Status open_bytes(const std::string& bytes, Bundle* out = nullptr) {
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  const Status status = bundle.open(aligned.data(), aligned.size);
+  if (status == Status::ok) test::touch_everything(bundle);
+  if (out) *out = Bundle{};
+  return status;
+}
+
+void fix_checksum(std::string& bytes) {
+  format::BundleHeader header =
+      format::load<format::BundleHeader>(reinterpret_cast<const unsigned char*>(bytes.data()));
+  if (header.total_size < sizeof(header) || header.total_size > bytes.size()) return;
+  header.checksum =
+      format::crc32(0, bytes.data() + sizeof(header), header.total_size - sizeof(header));
+  std::memcpy(bytes.data(), &header, sizeof(header));
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.x * ab.x + ab.y * ab.y;
+  const double t =
+      len2 > 0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2, 0.0, 1.0) : 0.0;
+  const Vec2 d = p - (a + ab * t);
+  return std::hypot(d.x, d.y);
+}
+
+// Distance from p to a convex counter-clockwise polygon (0 inside).
+double distance_to_convex(Vec2 p, const Ring& ring) {
+  bool inside = true;
+  double best = 1e300;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+    if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) < 0) inside = false;
+    best = std::min(best, segment_distance(p, a, b));
+  }
+  return inside ? 0.0 : best;
+}
+
+Ring stored_ring(const runtime::Hull& hull) {
+  Ring ring;
+  for (std::size_t i = 0; i < hull.vertex_count(); ++i)
+    ring.push_back({hull.vertex(i).x, hull.vertex(i).y});
+  return ring;
+}
+
+double cross(Vec2 o, Vec2 a, Vec2 b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Checks every stored hull against its cooked hull: same level structure, strictly convex and
+// counter-clockwise (in float too), two-sided Hausdorff distance within the asset's bound.
+void expect_round_trip(const std::vector<CookedAsset>& assets, const Bundle& bundle) {
+  ASSERT_EQ(bundle.asset_count(), assets.size());
+  for (std::size_t a = 0; a < assets.size(); ++a) {
+    const CookedAsset& cooked = assets[a];
+    const runtime::Asset asset = bundle.find(cooked.name);
+    ASSERT_TRUE(asset.valid()) << cooked.name;
+    EXPECT_EQ(asset.index(), a);
+    EXPECT_EQ(asset.name(), cooked.name);
+    EXPECT_EQ(asset.image_width(), cooked.image_width);
+    EXPECT_EQ(asset.image_height(), cooked.image_height);
+    EXPECT_FLOAT_EQ(asset.pixels_per_unit(), static_cast<float>(cooked.pixels_per_unit));
+    EXPECT_FLOAT_EQ(asset.pivot().x, static_cast<float>(cooked.pivot.x));
+    EXPECT_FLOAT_EQ(asset.pivot().y, static_cast<float>(cooked.pivot.y));
+    EXPECT_EQ(asset.has_physics(), cooked.physics.has_value());
+    if (cooked.physics) {
+      EXPECT_EQ(asset.physics().density, cooked.physics->density);
+      EXPECT_EQ(asset.physics().friction, cooked.physics->friction);
+      EXPECT_EQ(asset.physics().restitution, cooked.physics->restitution);
+      EXPECT_EQ(asset.physics().sensor, cooked.physics->sensor);
+      EXPECT_EQ(asset.physics().category_bits, cooked.physics->category_bits);
+      EXPECT_EQ(asset.physics().mask_bits, cooked.physics->mask_bits);
+    }
+    const std::size_t levels = std::max<std::size_t>(cooked.levels.size(), 1);
+    ASSERT_EQ(asset.level_count(), levels);
+    if (cooked.levels.empty()) {
+      EXPECT_EQ(asset.level(0).hull_count(), 0u);
+      continue;
+    }
+    const double bound =
+        format::quantization_error_bound(cooked.levels[0].tau, cooked.pixels_per_unit);
+    EXPECT_LE(asset.quantization_error(), bound * (1 + 1e-6));
+    for (std::size_t l = 0; l < levels; ++l) {
+      const runtime::Level level = asset.level(l);
+      EXPECT_FLOAT_EQ(level.tau(), static_cast<float>(cooked.levels[l].tau));
+      ASSERT_EQ(level.hull_count(), cooked.levels[l].hulls.size());
+      for (std::size_t h = 0; h < level.hull_count(); ++h) {
+        const Ring& original = cooked.levels[l].hulls[h];
+        const Ring stored = stored_ring(level.hull(h));
+        ASSERT_GE(stored.size(), 3u);
+        EXPECT_LE(stored.size(), original.size());
+        double area2 = 0, perimeter = 0, magnitude = 0;
+        for (std::size_t i = 0; i < stored.size(); ++i) {
+          const Vec2 p = stored[i], q = stored[(i + 1) % stored.size()],
+                     r = stored[(i + 2) % stored.size()];
+          EXPECT_GT(cross(p, q, r), 0.0) << cooked.name << " level " << l << " hull " << h;
+          area2 += p.x * q.y - p.y * q.x;
+          perimeter += std::hypot(q.x - p.x, q.y - p.y);
+        }
+        for (const Vec2& p : original)
+          magnitude = std::max({magnitude, std::fabs(p.x), std::fabs(p.y)});
+        // area() is exact on the grid; the float vertices carry half an ulp of the coordinates.
+        EXPECT_NEAR(level.hull(h).area(), 0.5 * area2,
+                    1e-6 * std::fabs(area2) + 1.2e-7 * magnitude * perimeter);
+        // The float conversion of the reader adds at most half an ulp of the coordinates.
+        const double slack = bound + 2e-7 * magnitude;
+        double worst = 0;
+        for (const Vec2& p : original) worst = std::max(worst, distance_to_convex(p, stored));
+        for (const Vec2& p : stored) worst = std::max(worst, distance_to_convex(p, original));
+        EXPECT_LE(worst, slack) << cooked.name << " level " << l << " hull " << h;
+      }
+    }
+  }
+}
+
+TEST(Bundle, RoundTripWithinTheQuantizationBound) {
+  const std::vector<CookedAsset> assets = test::synthetic_assets();
+  const std::string bytes = write_bundle(assets);
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  EXPECT_EQ(bundle.size(), bytes.size());
+  EXPECT_EQ(bundle.version_major(), 1);
+  EXPECT_EQ(bundle.version_minor(), 0);
+  expect_round_trip(assets, bundle);
+  EXPECT_FALSE(bundle.find("missing").valid());
+  EXPECT_FALSE(bundle.find("").valid());
+  EXPECT_FALSE(bundle.find("box ").valid());
+  EXPECT_FALSE(bundle.asset(assets.size()).valid());
+}
+
+TEST(Bundle, WritingIsDeterministicAndMeetsTheSizeTarget) {
+  const std::vector<CookedAsset> assets = test::synthetic_assets();
+  const std::string bytes = write_bundle(assets);
+  EXPECT_EQ(bytes, write_bundle(assets));
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  // The project's budget (SPEC §10), with every extra level charged at its 8 bytes.
+  std::size_t names = 0, extra_levels = 0;
+  for (const CookedAsset& asset : assets) {
+    names += asset.name.size() + 1;
+    extra_levels += asset.levels.size() > 1 ? asset.levels.size() - 1 : 0;
+  }
+  const double budget = 4.5 * bundle.vertex_count() + 16.0 * bundle.hull_count() +
+                        48.0 * assets.size() + 64.0 + 8.0 * extra_levels + 20.0 * assets.size();
+  EXPECT_LE(static_cast<double>(bytes.size() - names), budget);
+  // Without physics and with one level per asset the plain target holds.
+  std::vector<CookedAsset> plain = assets;
+  std::size_t vertices = 0, hulls = 0;
+  names = 0;
+  for (CookedAsset& asset : plain) {
+    asset.physics.reset();
+    if (asset.levels.size() > 1) asset.levels.resize(1);
+    names += asset.name.size() + 1;
+    for (const CookedLevel& level : asset.levels) {
+      hulls += level.hulls.size();
+      for (const Ring& hull : level.hulls) vertices += hull.size();
+    }
+  }
+  const std::string plain_bytes = write_bundle(plain);
+  EXPECT_LE(static_cast<double>(plain_bytes.size() - names),
+            4.5 * vertices + 16.0 * hulls + 48.0 * plain.size() + 64.0);
+}
+
+TEST(Bundle, NastyHullsStayConvexAfterQuantization) {
+  std::mt19937_64 random(20261122);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<CookedAsset> assets;
+  for (int a = 0; a < 40; ++a) {
+    // Sizes are drawn in pixels: the bound is 1/64 px at τ = 0 whatever the pixels per unit.
+    const double ppu = 0.5 + 40 * unit(random);
+    std::vector<Ring> hulls;
+    for (int h = 0; h < 10; ++h) {
+      // A thin sliver: a long segment and a point barely off it, at a random angle and place.
+      const double angle = unit(random) * 2 * M_PI, length = (1 + 500 * unit(random)) / ppu;
+      const Vec2 origin = Vec2{400 * unit(random) - 200, 400 * unit(random) - 200} / ppu;
+      const Vec2 dir{std::cos(angle), std::sin(angle)}, normal{-dir.y, dir.x};
+      const double thickness = (0.05 + 2 * unit(random)) / ppu;
+      hulls.push_back(
+          {origin, origin + dir * length, origin + dir * (0.5 * length) + normal * thickness});
+      // Near-collinear: points on a very flat convex arc closed by a far point.
+      Ring arc;
+      const int n = 3 + static_cast<int>(unit(random) * 6);
+      for (int i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i) / (n - 1);
+        arc.push_back(origin + dir * (t * length) - normal * (1e-4 * t * (1 - t) * length));
+      }
+      arc.push_back(origin + dir * (0.5 * length) + normal * ((5.0 * unit(random) + 0.1) / ppu));
+      hulls.push_back(arc);
+    }
+    const double tau = unit(random) < 0.3 ? 0.0 : unit(random) / ppu;
+    assets.push_back(test::make_asset("nasty/" + std::to_string(a), {{tau, hulls}}, ppu));
+  }
+  const std::string bytes = write_bundle(assets);
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  expect_round_trip(assets, bundle);
+}
+
+TEST(Bundle, QuantizationMeetsTheBoundOnTinyAndHugeScales) {
+  std::vector<CookedAsset> assets;
+  assets.push_back(
+      test::make_asset("tiny", {{0.0, {test::regular_polygon({0.001, 0.002}, 0.01, 7)}}}, 1000.0));
+  assets.push_back(test::make_asset("far", {{1.0, {test::regular_polygon({1e5, -2e5}, 50.0, 8)}}}));
+  assets.push_back(test::make_asset("big", {{2.0, {test::rectangle(0, 0, 1800, 20)}}}));
+  const std::string bytes = write_bundle(assets);
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  expect_round_trip(assets, bundle);
+}
+
+TEST(Bundle, WriterRefusesWhatItCannotStore) {
+  auto box = [](const std::string& name) {
+    return test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}});
+  };
+  EXPECT_THROW(write_bundle({box("a"), box("a")}), OutputError);
+  EXPECT_THROW(write_bundle({box("")}), OutputError);
+  EXPECT_THROW(write_bundle({box(std::string(70000, 'x'))}), OutputError);
+  // Too large for 16-bit deltas at 1/64 px.
+  EXPECT_THROW(write_bundle({test::make_asset("huge", {{0.0, {test::rectangle(0, 0, 5000, 1)}}})}),
+               OutputError);
+  EXPECT_THROW(write_bundle({test::make_asset("nan", {{0.0, {{{0, 0}, {1, 0}, {NAN, 1}}}}})}),
+               OutputError);
+  EXPECT_THROW(write_bundle({test::make_asset("two", {{0.0, {{{0, 0}, {1, 0}}}}})}), OutputError);
+  EXPECT_THROW(write_bundle({test::make_asset("order", {{2.0, {}}, {1.0, {}}})}), OutputError);
+  CookedAsset wide = box("wide");
+  wide.image_width = 70000;
+  EXPECT_THROW(write_bundle({wide}), OutputError);
+  // An empty bundle is valid.
+  AlignedBytes empty(write_bundle({}));
+  Bundle bundle;
+  EXPECT_EQ(bundle.open(empty.data(), empty.size), Status::ok);
+  EXPECT_EQ(bundle.asset_count(), 0u);
+  EXPECT_FALSE(bundle.find("a").valid());
+}
+
+// ---- Golden files -----------------------------------------------------------------------------
+
+TEST(Golden, WriterReproducesTheCurrentVersionByteForByte) {
+  const fs::path golden = kGoldenDir / "v1.0/synthetic.hcb";
+  const std::string bytes = write_bundle(test::synthetic_assets());
+  if (const char* update = std::getenv("HULLCOOK_UPDATE_GOLDEN");
+      update && std::string(update) == "1") {
+    fs::create_directories(golden.parent_path());
+    std::ofstream(golden, std::ios::binary) << bytes;
+    GTEST_SKIP() << "rewrote " << golden;
+  }
+  ASSERT_TRUE(fs::exists(golden)) << golden << " is missing; run with HULLCOOK_UPDATE_GOLDEN=1";
+  EXPECT_TRUE(read_file(golden) == bytes)
+      << golden << " differs from the writer's output: a format change needs a new version";
+}
+
+TEST(Golden, ReaderAcceptsEveryGoldenFileOfEverySupportedVersion) {
+  std::size_t files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kGoldenDir)) {
+    if (entry.path().extension() != ".hcb") continue;
+    ++files;
+    const std::string bytes = read_file(entry.path());
+    AlignedBytes aligned(bytes);
+    Bundle bundle;
+    ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok) << entry.path();
+    const std::string folder = entry.path().parent_path().filename().string();
+    EXPECT_EQ(folder, "v" + std::to_string(bundle.version_major()) + "." +
+                          std::to_string(bundle.version_minor()))
+        << entry.path();
+    EXPECT_GT(bundle.asset_count(), 0u);
+    test::touch_everything(bundle);
+  }
+  EXPECT_GE(files, 1u);
+}
+
+// ---- Corruption -------------------------------------------------------------------------------
+
+std::string golden_bytes() { return read_file(kGoldenDir / "v1.0/synthetic.hcb"); }
+
+TEST(Corruption, EveryTruncatedPrefixIsRejectedAsTruncated) {
+  const std::string bytes = golden_bytes();
+  ASSERT_FALSE(bytes.empty());
+  for (std::size_t length = 0; length < bytes.size(); ++length)
+    ASSERT_EQ(open_bytes(bytes.substr(0, length)), Status::truncated) << "prefix " << length;
+  EXPECT_EQ(open_bytes(bytes), Status::ok);
+  EXPECT_EQ(open_bytes(bytes + std::string(5, '\x7f')), Status::ok) << "trailing bytes are ignored";
+}
+
+// The status a flipped byte at offset must produce (SPEC §11 order).
+Status expected_for_flip(std::size_t offset, std::uint8_t original, std::uint8_t flipped) {
+  if (offset < 4) return Status::bad_magic;
+  if (offset == 4)
+    return flipped > original ? Status::unsupported_major_version : Status::malformed;
+  if (offset == 5) return Status::unsupported_minor_version;  // the goldens have minor 0
+  return Status::ok;  // any other failure status (checked by the caller)
+}
+
+TEST(Corruption, EverySingleFlippedByteOrBitIsRejected) {
+  const std::string bytes = golden_bytes();
+  ASSERT_FALSE(bytes.empty());
+  for (std::size_t offset = 0; offset < bytes.size(); ++offset) {
+    for (unsigned mask : {0xFFu, 0x01u, 0x80u, 0x10u}) {
+      std::string corrupt = bytes;
+      corrupt[offset] = static_cast<char>(corrupt[offset] ^ mask);
+      const Status status = open_bytes(corrupt);
+      ASSERT_NE(status, Status::ok) << "offset " << offset << " mask " << mask;
+      const Status expected = expected_for_flip(offset, static_cast<std::uint8_t>(bytes[offset]),
+                                                static_cast<std::uint8_t>(corrupt[offset]));
+      if (expected != Status::ok) {
+        ASSERT_EQ(status, expected) << "offset " << offset;
+      } else if (offset >= 12) {
+        // The checksum field itself, the payload, and a smaller total size all fail the CRC;
+        // a larger total size is truncation; counts and offsets fail the layout checks.
+        if (offset >= 64 || offset < 16) {
+          ASSERT_EQ(status, Status::bad_checksum) << "offset " << offset;
+        } else {
+          ASSERT_TRUE(status == Status::malformed || status == Status::out_of_bounds ||
+                      status == Status::misaligned || status == Status::truncated)
+              << "offset " << offset << ": " << runtime::status_string(status);
+        }
+      } else {  // flags and total size
+        ASSERT_TRUE(status == Status::malformed || status == Status::truncated ||
+                    status == Status::bad_checksum)
+            << "offset " << offset << ": " << runtime::status_string(status);
+      }
+    }
+  }
+}
+
+// Flips with the checksum repaired reach the structural checks; each must still be caught or,
+// when the mutation happens to produce a valid bundle (a different but legal coordinate), be
+// readable without any out-of-bounds access (the sanitizers watch touch_everything).
+TEST(Corruption, FlipsWithARepairedChecksumReachTheStructuralChecks) {
+  const std::string bytes = golden_bytes();
+  std::size_t rejected = 0;
+  for (std::size_t offset = 16; offset < bytes.size(); ++offset) {
+    std::string corrupt = bytes;
+    corrupt[offset] = static_cast<char>(corrupt[offset] ^ 0xFF);
+    fix_checksum(corrupt);
+    if (open_bytes(corrupt) != Status::ok) ++rejected;
+  }
+  EXPECT_GT(rejected, (bytes.size() - 16) / 4);
+}
+
+TEST(Corruption, FuzzedMutationsNeverCrash) {
+  const std::string golden = golden_bytes();
+  ASSERT_FALSE(golden.empty());
+  std::mt19937 random(0x5EED);
+  std::size_t accepted = 0;
+  for (int round = 0; round < 6000; ++round) {
+    std::string bytes = golden;
+    const int edits = 1 + static_cast<int>(random() % 8);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = random() % bytes.size();
+      switch (random() % 5) {
+        case 0:
+          bytes[at] = static_cast<char>(random());
+          break;
+        case 1:
+          bytes[at] = static_cast<char>(bytes[at] ^ (1u << (random() % 8)));
+          break;
+        case 2: {  // an extreme 32-bit value, aligned
+          const std::uint32_t values[] = {0, 1, 0x7FFFFFFF, 0x80000000, 0xFFFFFFFF, 0xFFFF};
+          const std::size_t word = (at & ~std::size_t{3});
+          if (word + 4 <= bytes.size()) std::memcpy(bytes.data() + word, &values[random() % 6], 4);
+          break;
+        }
+        case 3:
+          bytes.resize(at + 1);
+          break;
+        default:
+          bytes.insert(at, 1, static_cast<char>(random()));
+          break;
+      }
+    }
+    if (random() % 2) fix_checksum(bytes);
+    if (open_bytes(bytes) == Status::ok) ++accepted;
+  }
+  // Most mutations are caught; some (e.g. a legal vertex moved) are valid bundles.
+  EXPECT_LT(accepted, 6000u / 2);
+}
+
+TEST(Corruption, DistinctStatusesForDistinctProblems) {
+  const std::string bytes = golden_bytes();
+  ASSERT_FALSE(bytes.empty());
+  Bundle bundle;
+  EXPECT_EQ(bundle.open(nullptr, 10), Status::invalid_argument);
+  EXPECT_EQ(bundle.open(nullptr, 0), Status::truncated);
+
+  std::string copy = bytes;
+  copy[0] = 'X';
+  EXPECT_EQ(open_bytes(copy), Status::bad_magic);
+  copy = bytes;
+  copy[4] = 2;
+  EXPECT_EQ(open_bytes(copy), Status::unsupported_major_version);
+  copy = bytes;
+  copy[5] = 1;
+  EXPECT_EQ(open_bytes(copy), Status::unsupported_minor_version);
+  copy = bytes;
+  copy[100] ^= 1;
+  EXPECT_EQ(open_bytes(copy), Status::bad_checksum);
+
+  // A buffer at an odd address.
+  std::vector<std::uint32_t> words(bytes.size() / 4 + 2);
+  auto* odd = reinterpret_cast<unsigned char*>(words.data()) + 1;
+  std::memcpy(odd, bytes.data(), bytes.size());
+  EXPECT_EQ(bundle.open(odd, bytes.size()), Status::misaligned);
+  EXPECT_TRUE(bundle.empty());
+
+  // A misaligned section offset, with a valid checksum.
+  copy = bytes;
+  format::BundleHeader header =
+      format::load<format::BundleHeader>(reinterpret_cast<const unsigned char*>(copy.data()));
+  header.levels_offset += 2;
+  std::memcpy(copy.data(), &header, sizeof(header));
+  EXPECT_EQ(open_bytes(copy), Status::misaligned);
+
+  // A hull made reflex, with a valid checksum.
+  copy = bytes;
+  header = format::load<format::BundleHeader>(reinterpret_cast<const unsigned char*>(copy.data()));
+  const format::VertexRecord first = format::load<format::VertexRecord>(
+      reinterpret_cast<const unsigned char*>(copy.data()) + header.vertices_offset);
+  // Move vertex 1 of hull 0 onto vertex 0: a repeated vertex.
+  std::memcpy(copy.data() + header.vertices_offset + 4, &first, 4);
+  fix_checksum(copy);
+  EXPECT_EQ(open_bytes(copy), Status::malformed);
+
+  // Two assets with the same name, with a valid checksum.
+  const std::string with_names =
+      write_bundle({test::make_asset("aa", {{0.0, {test::rectangle(0, 0, 1, 1)}}}),
+                    test::make_asset("ab", {{0.0, {test::rectangle(0, 0, 1, 1)}}})});
+  copy = with_names;
+  const auto pos = copy.rfind("ab");
+  copy[pos + 1] = 'a';
+  fix_checksum(copy);
+  EXPECT_EQ(open_bytes(copy), Status::malformed);
+
+  for (int s = 0; s <= static_cast<int>(Status::malformed) + 1; ++s)
+    EXPECT_GT(std::strlen(runtime::status_string(static_cast<Status>(s))), 1u);
+}
+
+}  // namespace
+}  // namespace hullcook

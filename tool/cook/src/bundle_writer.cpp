@@ -1,0 +1,324 @@
+#include "hullcook/cook/bundle_writer.h"
+
+#include "hullcook/core/error.h"
+#include "hullcook/format/bundle_layout.h"
+#include "hullcook/format/crc32.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <string_view>
+
+namespace hullcook {
+namespace {
+
+using format::AssetRecord;
+using format::BundleHeader;
+using format::HullRecord;
+using format::LevelRecord;
+using format::PhysicsRecord;
+using format::VertexRecord;
+
+struct GridPoint {
+  std::int64_t x = 0, y = 0;
+  bool operator<(const GridPoint& o) const { return x < o.x || (x == o.x && y < o.y); }
+  bool operator==(const GridPoint& o) const { return x == o.x && y == o.y; }
+};
+
+std::int64_t cross(const GridPoint& o, const GridPoint& a, const GridPoint& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Andrew's monotone chain on the integer grid, exact: counter-clockwise, strictly convex (no
+// repeated or collinear vertex). Fewer than 3 points when the rounded hull is degenerate.
+std::vector<GridPoint> strict_convex_hull(std::vector<GridPoint> points) {
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  std::vector<GridPoint> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const GridPoint& p : points) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  return hull;
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.x * ab.x + ab.y * ab.y;
+  double t = length2 > 0.0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Vec2 d = p - (a + ab * t);
+  return std::sqrt(d.x * d.x + d.y * d.y);
+}
+
+// Distance from p to the region bounded by ring (0 inside), for any simple ring.
+double distance_to_polygon(Vec2 p, const Ring& ring) {
+  bool inside = false;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[j], b = ring[i];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+      inside = !inside;
+    best = std::min(best, segment_distance(p, a, b));
+  }
+  return inside ? 0.0 : best;
+}
+
+// Two-sided Hausdorff distance of two simple polygons whose farthest points are vertices (true
+// for convex polygons: the distance to a convex set is a convex function).
+double hausdorff(const Ring& a, const Ring& b) {
+  double worst = 0.0;
+  for (const Vec2& p : a) worst = std::max(worst, distance_to_polygon(p, b));
+  for (const Vec2& p : b) worst = std::max(worst, distance_to_polygon(p, a));
+  return worst;
+}
+
+struct QuantizedHull {
+  HullRecord record{};
+  std::vector<VertexRecord> vertices;
+};
+
+struct QuantizedAsset {
+  float step = 0.0f;
+  std::vector<std::vector<QuantizedHull>> levels;
+};
+
+[[noreturn]] void fail(const CookedAsset& asset, const std::string& problem) {
+  throw OutputError("bundle: asset '" + asset.name + "': " + problem);
+}
+
+enum class Attempt { ok, too_coarse };
+
+// Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
+// the bound (a finer step fixes both).
+Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, double bound,
+                      QuantizedHull& out) {
+  const double quantum = step;
+  std::vector<GridPoint> points;
+  points.reserve(hull.size());
+  for (const Vec2& p : hull) {
+    const double qx = std::nearbyint(p.x / quantum), qy = std::nearbyint(p.y / quantum);
+    // Keep |base| + 2^15 within int32.
+    if (std::fabs(qx) > 2.0e9 || std::fabs(qy) > 2.0e9)
+      fail(asset, "a hull vertex is too far from the origin for the bundle's 32-bit grid");
+    points.push_back({static_cast<std::int64_t>(qx), static_cast<std::int64_t>(qy)});
+  }
+  const std::vector<GridPoint> grid = strict_convex_hull(std::move(points));
+  if (grid.size() < format::kMinHullVertices) return Attempt::too_coarse;
+
+  std::int64_t min_x = grid[0].x, max_x = min_x, min_y = grid[0].y, max_y = min_y;
+  for (const GridPoint& p : grid) {
+    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+  }
+  constexpr std::int64_t kDeltaRange = 65535;  // int16 span
+  if (max_x - min_x > kDeltaRange || max_y - min_y > kDeltaRange) {
+    const double extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
+    fail(asset, "a hull spans " + std::to_string(extent) +
+                    " output units, more than the 65535 quanta of 16-bit deltas at the required "
+                    "precision of " +
+                    std::to_string(bound) + " units; cook it with a larger tau");
+  }
+  // Centre the base so that deltas fall in [-32768, 32767].
+  const std::int64_t base_x = min_x + 32768, base_y = min_y + 32768;
+  out.record.base_x = static_cast<std::int32_t>(base_x);
+  out.record.base_y = static_cast<std::int32_t>(base_y);
+  out.vertices.clear();
+  Ring stored;
+  for (const GridPoint& p : grid) {
+    const VertexRecord v{static_cast<std::int16_t>(p.x - base_x),
+                         static_cast<std::int16_t>(p.y - base_y)};
+    out.vertices.push_back(v);
+    stored.push_back({format::dequantize(out.record.base_x, v.dx, step),
+                      format::dequantize(out.record.base_y, v.dy, step)});
+  }
+  return hausdorff(hull, stored) <= bound ? Attempt::ok : Attempt::too_coarse;
+}
+
+QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
+  const double bound = format::quantization_error_bound(levels[0].tau, asset.pixels_per_unit);
+  QuantizedAsset result;
+  // Rounding alone moves a vertex by at most step/√2 = bound; halving covers dropped vertices.
+  result.step = static_cast<float>(bound * std::sqrt(2.0));
+  for (int attempt = 0; attempt < 24; ++attempt, result.step *= 0.5f) {
+    if (!(result.step > 0.0f)) break;
+    result.levels.assign(levels.size(), {});
+    bool ok = true;
+    for (std::size_t l = 0; l < levels.size() && ok; ++l) {
+      for (const Ring& hull : levels[l].hulls) {
+        QuantizedHull quantized;
+        if (quantize_hull(asset, hull, result.step, bound, quantized) != Attempt::ok) {
+          ok = false;
+          break;
+        }
+        result.levels[l].push_back(std::move(quantized));
+      }
+    }
+    if (ok) return result;
+  }
+  fail(asset, "a hull is too thin to be stored as a convex polygon within " +
+                  std::to_string(bound) + " output units");
+}
+
+void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
+  if (asset.name.empty()) fail(asset, "empty name");
+  if (asset.name.size() > 0xFFFF) fail(asset, "name longer than 65535 bytes");
+  if (asset.image_width < 0 || asset.image_width > 0xFFFF || asset.image_height < 0 ||
+      asset.image_height > 0xFFFF)
+    fail(asset, "image side outside [0, 65535] px");
+  if (!std::isfinite(asset.pixels_per_unit) || !(asset.pixels_per_unit > 0.0) ||
+      !std::isfinite(static_cast<float>(asset.pixels_per_unit)))
+    fail(asset, "pixels per unit must be finite and positive");
+  if (!std::isfinite(static_cast<float>(asset.pivot.x)) ||
+      !std::isfinite(static_cast<float>(asset.pivot.y)))
+    fail(asset, "non-finite pivot");
+  double previous_tau = 0.0;
+  for (const CookedLevel& level : levels) {
+    if (!std::isfinite(static_cast<float>(level.tau)) || level.tau < previous_tau)
+      fail(asset, "levels must have finite, non-negative tau from finest to coarsest");
+    previous_tau = level.tau;
+    for (const Ring& hull : level.hulls) {
+      if (hull.size() < format::kMinHullVertices) fail(asset, "a hull has fewer than 3 vertices");
+      for (const Vec2& p : hull)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(asset, "non-finite hull vertex");
+    }
+  }
+  if (asset.physics) {
+    const PhysicsProperties& physics = *asset.physics;
+    for (float value : {physics.density, physics.friction, physics.restitution})
+      if (!std::isfinite(value) || value < 0.0f)
+        fail(asset, "physics properties must be finite and non-negative");
+  }
+}
+
+template <typename T>
+void put(std::string& bytes, std::size_t offset, const T& value) {
+  std::memcpy(bytes.data() + offset, &value, sizeof(T));
+}
+
+std::uint32_t to_u32(std::size_t value) {
+  if (value > std::numeric_limits<std::uint32_t>::max())
+    throw OutputError("bundle: larger than 4 GiB, the format's limit");
+  return static_cast<std::uint32_t>(value);
+}
+
+}  // namespace
+
+std::string write_bundle(const std::vector<CookedAsset>& assets) {
+  std::set<std::string_view> names;
+  std::vector<std::vector<CookedLevel>> asset_levels;
+  std::vector<QuantizedAsset> quantized;
+  bool any_physics = false;
+  std::size_t level_count = 0, hull_count = 0, vertex_count = 0, strings_size = 0;
+  for (const CookedAsset& asset : assets) {
+    if (!names.insert(asset.name).second) fail(asset, "two assets have this name");
+    std::vector<CookedLevel> levels = asset.levels;
+    if (levels.empty()) levels.push_back({asset.tau, {}});
+    check_asset(asset, levels);
+    quantized.push_back(quantize_asset(asset, levels));
+    asset_levels.push_back(std::move(levels));
+    any_physics = any_physics || asset.physics.has_value();
+    level_count += quantized.back().levels.size();
+    for (const auto& level : quantized.back().levels) {
+      hull_count += level.size();
+      for (const QuantizedHull& hull : level) vertex_count += hull.vertices.size();
+    }
+    strings_size += asset.name.size() + 1;
+  }
+
+  BundleHeader header{};
+  std::memcpy(header.magic, format::kMagic, sizeof(header.magic));
+  header.version_major = format::kVersionMajor;
+  header.version_minor = format::kVersionMinor;
+  header.flags = any_physics ? format::kBundleHasPhysics : 0;
+  header.asset_count = to_u32(assets.size());
+  header.slot_count = format::writer_slot_count(header.asset_count);
+  header.level_count = to_u32(level_count);
+  header.hull_count = to_u32(hull_count);
+  header.vertex_count = to_u32(vertex_count);
+  std::size_t end = sizeof(BundleHeader);
+  auto place = [&end](std::size_t count, std::size_t record_size) {
+    const std::size_t offset = end;
+    end += count * record_size;
+    return to_u32(offset);
+  };
+  header.assets_offset = place(assets.size(), sizeof(AssetRecord));
+  header.physics_offset = any_physics ? place(assets.size(), sizeof(PhysicsRecord)) : 0;
+  header.slots_offset = place(header.slot_count, sizeof(std::uint32_t));
+  header.levels_offset = place(level_count, sizeof(LevelRecord));
+  header.hulls_offset = place(hull_count, sizeof(HullRecord));
+  header.vertices_offset = place(vertex_count, sizeof(VertexRecord));
+  header.strings_offset = place(strings_size, 1);
+  header.total_size = to_u32(end);
+
+  std::string bytes(end, '\0');
+  std::vector<std::uint32_t> slots(header.slot_count, format::kEmptySlot);
+  std::uint32_t level_index = 0, hull_index = 0, vertex_index = 0, name_offset = 0;
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    const CookedAsset& asset = assets[i];
+    AssetRecord record{};
+    record.name_offset = name_offset;
+    record.name_length = static_cast<std::uint16_t>(asset.name.size());
+    record.flags = asset.physics ? format::kAssetHasPhysics : 0;
+    record.first_level = level_index;
+    record.image_width = static_cast<std::uint16_t>(asset.image_width);
+    record.image_height = static_cast<std::uint16_t>(asset.image_height);
+    record.pixels_per_unit = static_cast<float>(asset.pixels_per_unit);
+    record.pivot_u = static_cast<float>(asset.pivot.x);
+    record.pivot_v = static_cast<float>(asset.pivot.y);
+    record.quant_step = quantized[i].step;
+    put(bytes, header.assets_offset + i * sizeof(AssetRecord), record);
+
+    if (asset.physics) {
+      PhysicsRecord physics{};
+      physics.density = asset.physics->density;
+      physics.friction = asset.physics->friction;
+      physics.restitution = asset.physics->restitution;
+      physics.category_bits = asset.physics->category_bits;
+      physics.mask_bits = asset.physics->mask_bits;
+      physics.flags = asset.physics->sensor ? format::kPhysicsSensor : 0;
+      put(bytes, header.physics_offset + i * sizeof(PhysicsRecord), physics);
+    }
+
+    std::uint32_t slot =
+        format::name_hash(asset.name.data(), asset.name.size()) % header.slot_count;
+    while (slots[slot] != format::kEmptySlot) slot = (slot + 1) % header.slot_count;
+    slots[slot] = static_cast<std::uint32_t>(i);
+
+    for (std::size_t l = 0; l < quantized[i].levels.size(); ++l) {
+      const LevelRecord level{static_cast<float>(asset_levels[i][l].tau), hull_index};
+      put(bytes, header.levels_offset + std::size_t{level_index++} * sizeof(LevelRecord), level);
+      for (const QuantizedHull& hull : quantized[i].levels[l]) {
+        HullRecord hull_record = hull.record;
+        hull_record.first_vertex = vertex_index;
+        put(bytes, header.hulls_offset + std::size_t{hull_index++} * sizeof(HullRecord),
+            hull_record);
+        for (const VertexRecord& v : hull.vertices)
+          put(bytes, header.vertices_offset + std::size_t{vertex_index++} * sizeof(VertexRecord),
+              v);
+      }
+    }
+    std::memcpy(bytes.data() + header.strings_offset + name_offset, asset.name.data(),
+                asset.name.size());
+    name_offset += static_cast<std::uint32_t>(asset.name.size() + 1);
+  }
+  for (std::size_t s = 0; s < slots.size(); ++s)
+    put(bytes, header.slots_offset + s * sizeof(std::uint32_t), slots[s]);
+
+  header.checksum =
+      format::crc32(0, bytes.data() + sizeof(BundleHeader), bytes.size() - sizeof(BundleHeader));
+  put(bytes, 0, header);
+  return bytes;
+}
+
+}  // namespace hullcook
