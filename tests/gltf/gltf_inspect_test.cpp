@@ -1,0 +1,148 @@
+// inspect_gltf (hullcook inspect on a glTF): reads back what write_gltf wrote, and refuses bad
+// files with exit code 2 and a message naming the file.
+#include "sample_assets.h"
+
+#include "hullcook/cook/gltf_writer.h"
+#include "hullcook/cook/output_file.h"
+#include "inspect.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace hullcook {
+namespace {
+
+using json = nlohmann::json;
+
+struct InspectRun {
+  int code;
+  std::string out, err;
+};
+
+InspectRun inspect(const std::filesystem::path& path, bool json_output) {
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  int code = cli::inspect_gltf(path, json_output);
+  std::string out = testing::internal::GetCapturedStdout();
+  return {code, out, testing::internal::GetCapturedStderr()};
+}
+
+class GltfInspect : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ =
+        std::filesystem::path(HULLCOOK_BINARY_DIR) / "tests" / "gltf" /
+        ("inspect_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(directory_);
+    std::filesystem::create_directories(directory_);
+  }
+  std::filesystem::path write(const std::string& name, const std::string& bytes) {
+    std::filesystem::path path = directory_ / name;
+    write_file_atomically(path, bytes);
+    return path;
+  }
+  std::filesystem::path directory_;
+};
+
+// --json gives back every level's hulls exactly, for text, binary and Draco files.
+TEST_F(GltfInspect, JsonReproducesTheHulls) {
+  const std::vector<CookedAsset> assets = test::all_sample_assets();
+  for (bool binary : {false, true}) {
+    for (bool draco : {false, true}) {
+      auto path =
+          write(std::string("samples") + (draco ? "_draco" : "") + (binary ? ".glb" : ".gltf"),
+                write_gltf(assets, {.binary = binary, .draco = draco}));
+      InspectRun run = inspect(path, true);
+      ASSERT_EQ(run.code, 0) << run.err;
+      json root = json::parse(run.out);
+      EXPECT_EQ(root["hullcook"], 1);
+      ASSERT_EQ(root["assets"].size(), assets.size());
+      for (std::size_t a = 0; a < assets.size(); ++a) {
+        const json& written = root["assets"][a];
+        EXPECT_EQ(written["name"], assets[a].name);
+        EXPECT_EQ(written["measure"], assets[a].measure);
+        EXPECT_EQ(written["tau"].get<double>(), assets[a].tau);
+        ASSERT_EQ(written["levels"].size(), assets[a].levels.size());
+        for (std::size_t l = 0; l < assets[a].levels.size(); ++l) {
+          const CookedLevel& level = assets[a].levels[l];
+          ASSERT_EQ(written["levels"][l]["hulls"].size(), level.hulls.size());
+          for (std::size_t h = 0; h < level.hulls.size(); ++h) {
+            const json& hull = written["levels"][l]["hulls"][h];
+            ASSERT_EQ(hull.size(), level.hulls[h].size());
+            for (std::size_t v = 0; v < hull.size(); ++v) {
+              EXPECT_EQ(hull[v][0].get<double>(), level.hulls[h][v].x);
+              EXPECT_EQ(hull[v][1].get<double>(), level.hulls[h][v].y);
+            }
+          }
+        }
+        EXPECT_EQ(written["pieces"].size(), assets[a].levels[0].hulls.size());
+        EXPECT_EQ(written.contains("physics"), assets[a].physics.has_value());
+        if (assets[a].physics) {
+          EXPECT_EQ(written["physics"]["friction"].get<float>(), assets[a].physics->friction);
+          EXPECT_EQ(written["physics"]["mask_bits"], assets[a].physics->mask_bits);
+        }
+      }
+    }
+  }
+}
+
+TEST_F(GltfInspect, TextListsAssetsLevelsAndHulls) {
+  auto path = write("box.glb", write_gltf({test::box_asset()}, {.binary = true}));
+  InspectRun run = inspect(path, false);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("1 assets, 2 hulls, 7 hull vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("bytes per vertex"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("asset \"box\""), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("level 1: tau 0.5, 1 hulls, 3 vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(0.3333333333333333, -0.5)"), std::string::npos) << run.out;
+}
+
+TEST_F(GltfInspect, DocumentWithoutAssetsHasNoAssets) {
+  auto path = write("nothing.glb", write_gltf({}, {.binary = true}));
+  InspectRun run = inspect(path, true);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(json::parse(run.out)["assets"], json::array());
+}
+
+// Every truncated prefix, and a few classic wrong files, give exit code 2 and the file's name;
+// never a crash.
+TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
+  const std::string glb = write_gltf({test::physics_asset()}, {.binary = true});
+  const std::string gltf = write_gltf({test::physics_asset()}, {});
+  std::vector<std::pair<std::string, std::string>> bad = {
+      {"empty.gltf", ""},
+      {"garbage.glb", "glTF\x02\x00\x00\x00garbage"},
+      {"text.gltf", "hello"},
+      {"array.gltf", "[1, 2]"},
+      {"version1.gltf", R"({"asset": {"version": "1.0"}})"},
+      {"plain.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"name": "cube"}]})"},
+      {"future.gltf",
+       R"({"asset": {"version": "2.0"}, "nodes": [{"extras": {"hullcook": {"version": 2}}}]})"},
+      {"odd.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"extras": {"hullcook": {
+          "version": 1, "source": "", "image_size": [0, 0], "pixels_per_unit": 1,
+          "pivot": [0, 0], "transform": {"scale": 1, "origin": [0, 0], "flip_y": false},
+          "tau": 0, "measure": "h1", "levels": [{"tau": 0, "hulls": [[0, 0, 1]]}]}}}]})"},
+  };
+  for (std::size_t length = 0; length < glb.size(); length += 1 + length / 16) {
+    bad.emplace_back("prefix" + std::to_string(length) + ".glb", glb.substr(0, length));
+  }
+  for (std::size_t length = 0; length < gltf.size(); length += 1 + length / 16) {
+    bad.emplace_back("prefix" + std::to_string(length) + ".gltf", gltf.substr(0, length));
+  }
+  for (const auto& [name, bytes] : bad) {
+    auto path = write(name, bytes);
+    InspectRun run = inspect(path, false);
+    EXPECT_EQ(run.code, 2) << name;
+    EXPECT_NE(run.err.find(name), std::string::npos) << name << ": " << run.err;
+    EXPECT_EQ(run.out, "") << name;
+  }
+  InspectRun missing = inspect(directory_ / "missing.glb", true);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("missing.glb"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hullcook

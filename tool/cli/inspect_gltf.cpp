@@ -1,0 +1,378 @@
+// `hullcook inspect FILE.gltf|FILE.glb`: reads the hulls back from the asset nodes' extras
+// (docs/gltf-extras.md), the canonical data; the meshes are only a mirror and are not read.
+#include "inspect.h"
+
+#include "hullcook/cook/asset.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hullcook::cli {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr int kExtrasVersion = 1;  // the newest extras schema this reader knows
+
+// The file is not a readable hullcook glTF; the message says why.
+struct BadGltf : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string shortest(double value) {
+  std::array<char, 32> text{};
+  auto result = std::to_chars(text.data(), text.data() + text.size(), value);
+  return std::string(text.data(), result.ptr);
+}
+
+// A float as the double of its shortest decimal form (0.6f prints as 0.6).
+double float_number(float value) {
+  std::array<char, 32> text{};
+  auto result = std::to_chars(text.data(), text.data() + text.size(), value);
+  return std::strtod(std::string(text.data(), result.ptr).c_str(), nullptr);
+}
+
+std::uint32_t read_u32(const std::string& bytes, std::size_t offset) {
+  std::uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<std::uint8_t>(bytes[offset + i]);
+  return value;
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw BadGltf("is a directory");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw BadGltf("cannot open the file");
+  std::ostringstream content;
+  content << file.rdbuf();
+  if (file.bad()) throw BadGltf("cannot read the file");
+  return std::move(content).str();
+}
+
+// The JSON text of a .gltf, or of a .glb's JSON chunk after checking the container.
+std::string json_text(const std::string& bytes, bool& binary) {
+  binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  if (!binary) return bytes;
+  if (bytes.size() < 20) throw BadGltf("truncated GLB: " + std::to_string(bytes.size()) + " bytes");
+  if (std::uint32_t version = read_u32(bytes, 4); version != 2) {
+    throw BadGltf("GLB container version " + std::to_string(version) + ", expected 2");
+  }
+  if (std::uint32_t length = read_u32(bytes, 8); length != bytes.size()) {
+    throw BadGltf("GLB header gives " + std::to_string(length) + " bytes but the file has " +
+                  std::to_string(bytes.size()) + " (truncated or padded)");
+  }
+  const std::uint32_t chunk_length = read_u32(bytes, 12);
+  if (read_u32(bytes, 16) != 0x4E4F534A) throw BadGltf("the first GLB chunk is not JSON");
+  if (chunk_length > bytes.size() - 20) throw BadGltf("the GLB JSON chunk runs past the end");
+  return bytes.substr(20, chunk_length);
+}
+
+// Typed access to the extras, each failure naming the asset and the key.
+class Fields {
+ public:
+  Fields(const json& object, std::string where) : object_(object), where_(std::move(where)) {}
+
+  const json& get(const char* key) const {
+    auto it = object_.find(key);
+    if (it == object_.end()) throw BadGltf(where_ + ": missing \"" + key + "\"");
+    return *it;
+  }
+  double number(const char* key) const { return number_of(get(key), key); }
+  double number_of(const json& value, const std::string& key) const {
+    if (!value.is_number()) throw BadGltf(where_ + ": \"" + key + "\" is not a number");
+    double number = value.get<double>();
+    if (!std::isfinite(number)) throw BadGltf(where_ + ": \"" + key + "\" is not finite");
+    return number;
+  }
+  std::string string(const char* key) const {
+    const json& value = get(key);
+    if (!value.is_string()) throw BadGltf(where_ + ": \"" + key + "\" is not a string");
+    return value.get<std::string>();
+  }
+  bool boolean(const char* key) const {
+    const json& value = get(key);
+    if (!value.is_boolean()) throw BadGltf(where_ + ": \"" + key + "\" is not a boolean");
+    return value.get<bool>();
+  }
+  std::int64_t integer(const char* key, std::int64_t min, std::int64_t max) const {
+    const json& value = get(key);
+    if (!value.is_number_integer() || value.get<std::int64_t>() < min ||
+        value.get<std::int64_t>() > max) {
+      throw BadGltf(where_ + ": \"" + key + "\" is not an integer in [" + std::to_string(min) +
+                    ", " + std::to_string(max) + "]");
+    }
+    return value.get<std::int64_t>();
+  }
+  Vec2 pair(const char* key) const {
+    const json& value = get(key);
+    if (!value.is_array() || value.size() != 2) {
+      throw BadGltf(where_ + ": \"" + key + "\" is not a pair of numbers");
+    }
+    return {number_of(value[0], key), number_of(value[1], key)};
+  }
+  const json& array(const char* key) const {
+    const json& value = get(key);
+    if (!value.is_array()) throw BadGltf(where_ + ": \"" + key + "\" is not an array");
+    return value;
+  }
+  const json& object(const char* key) const {
+    const json& value = get(key);
+    if (!value.is_object()) throw BadGltf(where_ + ": \"" + key + "\" is not an object");
+    return value;
+  }
+  const std::string& where() const { return where_; }
+
+ private:
+  const json& object_;
+  std::string where_;
+};
+
+CookedAsset read_asset(const json& node, const json& extras, std::size_t node_index) {
+  CookedAsset asset;
+  asset.name = node.contains("name") && node["name"].is_string() ? node["name"].get<std::string>()
+                                                                 : std::string();
+  const Fields fields(
+      extras, "node " + std::to_string(node_index) + " (\"" + asset.name + "\") extras.hullcook");
+  const std::int64_t version = fields.integer("version", 1, INT32_MAX);
+  if (version > kExtrasVersion) {
+    throw BadGltf(fields.where() + ": version " + std::to_string(version) +
+                  " is newer than this hullcook reads (" + std::to_string(kExtrasVersion) + ")");
+  }
+  asset.source = fields.string("source");
+  const json& size = fields.array("image_size");
+  if (size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
+      size[0].get<std::int64_t>() < 0 || size[1].get<std::int64_t>() < 0 ||
+      size[0].get<std::int64_t>() > INT32_MAX || size[1].get<std::int64_t>() > INT32_MAX) {
+    throw BadGltf(fields.where() + ": \"image_size\" is not two non-negative integers");
+  }
+  asset.image_width = size[0].get<int>();
+  asset.image_height = size[1].get<int>();
+  asset.pixels_per_unit = fields.number("pixels_per_unit");
+  asset.pivot = fields.pair("pivot");
+  const Fields transform(fields.object("transform"), fields.where() + ".transform");
+  asset.transform.scale = transform.number("scale");
+  asset.transform.origin = transform.pair("origin");
+  asset.transform.flip_y = transform.boolean("flip_y");
+  asset.tau = fields.number("tau");
+  asset.measure = fields.string("measure");
+
+  const json& levels = fields.array("levels");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
+    const Fields level_fields(levels[l], fields.where() + ".levels[" + std::to_string(l) + "]");
+    CookedLevel level;
+    level.tau = level_fields.number("tau");
+    const json& hulls = level_fields.array("hulls");
+    for (std::size_t h = 0; h < hulls.size(); ++h) {
+      const json& flat = hulls[h];
+      const std::string key = "hulls[" + std::to_string(h) + "]";
+      if (!flat.is_array() || flat.size() % 2 != 0) {
+        throw BadGltf(level_fields.where() + ": " + key + " is not a flat array of x, y pairs");
+      }
+      Ring hull;
+      for (std::size_t i = 0; i < flat.size(); i += 2) {
+        hull.push_back(
+            {level_fields.number_of(flat[i], key), level_fields.number_of(flat[i + 1], key)});
+      }
+      level.hulls.push_back(std::move(hull));
+    }
+    asset.levels.push_back(std::move(level));
+  }
+
+  if (extras.contains("physics")) {
+    const Fields physics(fields.object("physics"), fields.where() + ".physics");
+    PhysicsProperties properties;
+    properties.density = static_cast<float>(physics.number("density"));
+    properties.friction = static_cast<float>(physics.number("friction"));
+    properties.restitution = static_cast<float>(physics.number("restitution"));
+    properties.sensor = physics.boolean("sensor");
+    properties.category_bits =
+        static_cast<std::uint16_t>(physics.integer("category_bits", 0, 0xFFFF));
+    properties.mask_bits = static_cast<std::uint16_t>(physics.integer("mask_bits", 0, 0xFFFF));
+    asset.physics = properties;
+  }
+  return asset;
+}
+
+struct GltfContents {
+  bool binary = false;
+  bool draco = false;
+  std::size_t bytes = 0;
+  std::vector<CookedAsset> assets;
+};
+
+GltfContents read_gltf(const std::filesystem::path& path) {
+  GltfContents contents;
+  const std::string bytes = read_file(path);
+  contents.bytes = bytes.size();
+  json root = json::parse(json_text(bytes, contents.binary), nullptr, false);
+  if (root.is_discarded()) {
+    throw BadGltf(contents.binary ? "the GLB JSON chunk is not valid JSON"
+                                  : "neither a GLB nor valid glTF JSON");
+  }
+  if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object() ||
+      !root["asset"].contains("version") || !root["asset"]["version"].is_string()) {
+    throw BadGltf("not a glTF document (no asset.version)");
+  }
+  const std::string version = root["asset"]["version"];
+  if (version.rfind("2.", 0) != 0) throw BadGltf("glTF version " + version + ", expected 2.x");
+  if (root.contains("extensionsUsed") && root["extensionsUsed"].is_array()) {
+    for (const json& name : root["extensionsUsed"]) {
+      if (name == "KHR_draco_mesh_compression") contents.draco = true;
+    }
+  }
+  if (root.contains("nodes") && root["nodes"].is_array()) {
+    const json& nodes = root["nodes"];
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const json& node = nodes[i];
+      if (!node.is_object() || !node.contains("extras") || !node["extras"].is_object()) continue;
+      const json& extras = node["extras"];
+      if (!extras.contains("hullcook") || !extras["hullcook"].is_object()) continue;
+      if (!extras["hullcook"].contains("version")) continue;  // a hull node, not an asset node
+      contents.assets.push_back(read_asset(node, extras["hullcook"], i));
+    }
+  }
+  // hullcook writes a valid document for zero assets; any other glTF without our extras is not
+  // ours.
+  const bool ours = root["asset"].contains("generator") && root["asset"]["generator"] == "hullcook";
+  if (contents.assets.empty() && !ours) {
+    throw BadGltf("glTF without hullcook data (no node has extras.hullcook with a version)");
+  }
+  return contents;
+}
+
+std::string point_text(Vec2 p) { return "(" + shortest(p.x) + ", " + shortest(p.y) + ")"; }
+
+void print_text(const std::filesystem::path& path, const GltfContents& contents) {
+  std::size_t hulls = 0, vertices = 0;
+  for (const CookedAsset& asset : contents.assets) {
+    for (const CookedLevel& level : asset.levels) {
+      hulls += level.hulls.size();
+      for (const Ring& hull : level.hulls) vertices += hull.size();
+    }
+  }
+  std::cout << path.string() << ": glTF 2.0 "
+            << (contents.binary ? "binary (.glb)" : "text (.gltf)")
+            << (contents.draco ? " with Draco meshes" : "") << ", " << contents.bytes << " bytes, "
+            << contents.assets.size() << " assets, " << hulls << " hulls, " << vertices
+            << " hull vertices over all levels";
+  if (vertices > 0) {
+    std::cout << ", " << shortest(std::round(10.0 * contents.bytes / vertices) / 10.0)
+              << " bytes per vertex";
+  }
+  std::cout << "\n";
+  for (const CookedAsset& asset : contents.assets) {
+    std::cout << "asset \"" << asset.name << "\": source " << asset.source << ", image "
+              << asset.image_width << "x" << asset.image_height << " px, "
+              << shortest(asset.pixels_per_unit) << " px/unit, pivot " << point_text(asset.pivot)
+              << ", measure " << asset.measure << ", tau " << shortest(asset.tau) << "\n";
+    if (asset.physics) {
+      const PhysicsProperties& p = *asset.physics;
+      char bits[32];
+      std::snprintf(bits, sizeof bits, "0x%04x, mask 0x%04x", p.category_bits, p.mask_bits);
+      std::cout << "  physics: density " << shortest(float_number(p.density)) << ", friction "
+                << shortest(float_number(p.friction)) << ", restitution "
+                << shortest(float_number(p.restitution)) << ", sensor " << (p.sensor ? "yes" : "no")
+                << ", category " << bits << "\n";
+    }
+    for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+      const CookedLevel& level = asset.levels[l];
+      std::size_t level_vertices = 0;
+      for (const Ring& hull : level.hulls) level_vertices += hull.size();
+      std::cout << "  level " << l << ": tau " << shortest(level.tau) << ", " << level.hulls.size()
+                << " hulls, " << level_vertices << " vertices\n";
+      for (std::size_t h = 0; h < level.hulls.size(); ++h) {
+        std::cout << "    hull " << h << " (" << level.hulls[h].size() << "):";
+        for (const Vec2& v : level.hulls[h]) std::cout << " " << point_text(v);
+        std::cout << "\n";
+      }
+    }
+  }
+}
+
+json ring_json(const Ring& ring) {
+  json points = json::array();
+  for (const Vec2& v : ring) points.push_back({v.x, v.y});
+  return points;
+}
+
+// The debug JSON of issue 3. A glTF holds hulls only: no regions, components or concavities, so
+// `regions` is empty and each piece has only its `hull`; `levels`, the image and physics fields
+// extend the schema.
+json debug_json(const GltfContents& contents) {
+  json assets = json::array();
+  for (const CookedAsset& asset : contents.assets) {
+    json pieces = json::array();
+    json levels = json::array();
+    for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+      json hulls = json::array();
+      for (const Ring& hull : asset.levels[l].hulls) {
+        hulls.push_back(ring_json(hull));
+        if (l == 0) pieces.push_back({{"hull", ring_json(hull)}});
+      }
+      levels.push_back({{"tau", asset.levels[l].tau}, {"hulls", std::move(hulls)}});
+    }
+    json entry = {
+        {"name", asset.name},
+        {"source", asset.source},
+        {"transform",
+         {{"scale", asset.transform.scale},
+          {"origin", {asset.transform.origin.x, asset.transform.origin.y}},
+          {"flip_y", asset.transform.flip_y}}},
+        {"tau", asset.tau},
+        {"measure", asset.measure},
+        {"regions", json::array()},
+        {"pieces", pieces},
+        {"levels", std::move(levels)},
+        {"image_size", {asset.image_width, asset.image_height}},
+        {"pixels_per_unit", asset.pixels_per_unit},
+        {"pivot", {asset.pivot.x, asset.pivot.y}},
+        {"stats", {{"pieces", pieces.size()}}},
+    };
+    if (asset.physics) {
+      const PhysicsProperties& p = *asset.physics;
+      entry["physics"] = {
+          {"density", float_number(p.density)},         {"friction", float_number(p.friction)},
+          {"restitution", float_number(p.restitution)}, {"sensor", p.sensor},
+          {"category_bits", p.category_bits},           {"mask_bits", p.mask_bits}};
+    }
+    assets.push_back(std::move(entry));
+  }
+  return {{"hullcook", 1}, {"assets", std::move(assets)}};
+}
+
+}  // namespace
+
+int inspect_gltf(const std::filesystem::path& path, bool json_output) {
+  GltfContents contents;
+  try {
+    contents = read_gltf(path);
+  } catch (const BadGltf& error) {
+    std::cerr << "hullcook: error: " << path.string() << ": " << error.what() << "\n";
+    return 2;
+  } catch (const json::exception& error) {
+    std::cerr << "hullcook: error: " << path.string() << ": malformed glTF: " << error.what()
+              << "\n";
+    return 2;
+  }
+  if (json_output) {
+    std::cout << debug_json(contents).dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+  } else {
+    print_text(path, contents);
+  }
+  return 0;
+}
+
+}  // namespace hullcook::cli
