@@ -1,0 +1,48 @@
+// Geometry utilities on rings and regions, built on the exact predicates.
+#pragma once
+
+#include "hullcook/core/polygon.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace hullcook {
+
+// Signed area of a ring [units²]: positive when counter-clockwise.
+double signed_area(const Ring& ring);
+
+// Area of a region: outer minus holes [units²]. Assumes a cleaned region.
+double region_area(const Region& region);
+
+// Convex hull of a point set, counter-clockwise, without repeated or collinear vertices,
+// starting at the lowest-x (then lowest-y) point. Fewer than 3 points come back when the input
+// is degenerate (all equal: 1 point; all collinear: the 2 extreme points).
+Ring convex_hull(const Ring& points);
+
+// The same, as indices into points (an index is returned once even if its point repeats).
+std::vector<std::size_t> convex_hull_indices(const Ring& points);
+
+enum class Location { outside, boundary, inside };
+
+// Where p lies with respect to the closed ring (either orientation), exactly.
+Location locate_point(const Ring& ring, Vec2 p);
+
+// Where p lies with respect to the region: inside the outer ring and outside every hole.
+Location locate_point(const Region& region, Vec2 p);
+
+// Euclidean distance from p to the closed segment ab [units].
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
+
+struct Circle {
+  Vec2 center{0.0, 0.0};
+  double radius = 0.0;  // [units]
+};
+
+// Minimum enclosing circle of the points (Welzl's algorithm, iterative, fixed shuffle seed so the
+// result is deterministic). An empty input gives radius 0.
+Circle minimum_enclosing_circle(const Ring& points);
+
+// Radius R of the minimum enclosing circle of every outer boundary [units].
+double enclosing_radius(const std::vector<Region>& regions);
+
+}  // namespace hullcook

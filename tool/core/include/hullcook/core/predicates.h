@@ -1,0 +1,26 @@
+// Geometric predicates whose sign is exact for every finite double input.
+#pragma once
+
+#include "hullcook/core/polygon.h"
+
+namespace hullcook {
+
+// Twice the signed area of triangle abc [units²]: positive when a, b, c turn counter-clockwise,
+// negative clockwise, zero exactly when they are collinear. The sign is exact (Shewchuk-style
+// filter with an exact expansion fallback); the magnitude is approximate when tiny.
+// Exactness assumes the products do not underflow (|coordinates| well above 1e-150).
+double orient2d(Vec2 a, Vec2 b, Vec2 c);
+
+// -1, 0 or +1: the exact sign of orient2d(a, b, c).
+int orientation(Vec2 a, Vec2 b, Vec2 c);
+
+// True when p lies on the closed segment ab (exact).
+bool on_segment(Vec2 a, Vec2 b, Vec2 p);
+
+// True when the closed segments ab and cd share at least one point (exact).
+bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+// True when ab and cd cross at a single point interior to both (exact).
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+}  // namespace hullcook

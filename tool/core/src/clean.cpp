@@ -1,0 +1,231 @@
+#include "hullcook/core/clean.h"
+
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace hullcook {
+
+Ring remove_degenerate_vertices(const Ring& ring) {
+  Ring out;
+  out.reserve(ring.size());
+  for (Vec2 p : ring) {
+    while (out.size() >= 2 && orientation(out[out.size() - 2], out.back(), p) == 0) out.pop_back();
+    if (!out.empty() && out.back() == p) continue;
+    out.push_back(p);
+  }
+  // The closing edge: drop vertices that are repeated or collinear across the seam.
+  bool changed = true;
+  while (changed && out.size() >= 3) {
+    changed = false;
+    if (out.back() == out.front()) {
+      out.pop_back();
+      changed = true;
+    } else if (orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
+      out.pop_back();
+      changed = true;
+    } else if (orientation(out.back(), out[0], out[1]) == 0) {
+      out.erase(out.begin());
+      changed = true;
+    }
+  }
+  if (out.size() == 2 && out[0] == out[1]) out.pop_back();
+  return out;
+}
+
+namespace {
+
+std::string format_point(Vec2 p) {
+  char buffer[80];
+  std::snprintf(buffer, sizeof buffer, "(%.9g, %.9g)", p.x, p.y);
+  return buffer;
+}
+
+struct Edge {
+  int ring;  // 0 = outer, h = hole h (1-based)
+  std::size_t index;
+  Vec2 a, b;
+};
+
+struct Crossing {
+  const Edge* first;
+  const Edge* second;
+};
+
+bool adjacent(const Edge& e, const Edge& f, const std::vector<std::size_t>& ring_sizes) {
+  if (e.ring != f.ring) return false;
+  const std::size_t n = ring_sizes[static_cast<std::size_t>(e.ring)];
+  return (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
+}
+
+// The first intersecting pair of non-adjacent edges, found through a uniform grid; each pair is
+// tested only in the cell holding the lower corner of the overlap of their boxes.
+std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
+                                      const std::vector<std::size_t>& ring_sizes) {
+  double min_x = edges[0].a.x, max_x = min_x, min_y = edges[0].a.y, max_y = min_y;
+  for (const Edge& e : edges) {
+    min_x = std::min(min_x, e.a.x);
+    max_x = std::max(max_x, e.a.x);
+    min_y = std::min(min_y, e.a.y);
+    max_y = std::max(max_y, e.a.y);
+  }
+  const std::size_t side =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(double(edges.size()))), 1, 1024);
+  const double width = std::max(max_x - min_x, 1e-300);
+  const double height = std::max(max_y - min_y, 1e-300);
+  auto cell_x = [&](double x) {
+    const double t = (x - min_x) / width * double(side);
+    return std::min<std::size_t>(side - 1, static_cast<std::size_t>(std::max(0.0, t)));
+  };
+  auto cell_y = [&](double y) {
+    const double t = (y - min_y) / height * double(side);
+    return std::min<std::size_t>(side - 1, static_cast<std::size_t>(std::max(0.0, t)));
+  };
+  std::vector<std::vector<std::size_t>> cells(side * side);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Edge& e = edges[i];
+    const std::size_t x0 = cell_x(std::min(e.a.x, e.b.x)), x1 = cell_x(std::max(e.a.x, e.b.x));
+    const std::size_t y0 = cell_y(std::min(e.a.y, e.b.y)), y1 = cell_y(std::max(e.a.y, e.b.y));
+    for (std::size_t y = y0; y <= y1; ++y) {
+      for (std::size_t x = x0; x <= x1; ++x) cells[y * side + x].push_back(i);
+    }
+  }
+  std::optional<Crossing> best;
+  auto better = [&](const Edge& e) {
+    if (!best) return true;
+    return std::pair(e.ring, e.index) < std::pair(best->first->ring, best->first->index);
+  };
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const auto& cell = cells[c];
+    const std::size_t cx = c % side, cy = c / side;
+    for (std::size_t i = 0; i < cell.size(); ++i) {
+      const Edge& e = edges[cell[i]];
+      for (std::size_t j = i + 1; j < cell.size(); ++j) {
+        const Edge& f = edges[cell[j]];
+        const double low_x = std::max(std::min(e.a.x, e.b.x), std::min(f.a.x, f.b.x));
+        const double low_y = std::max(std::min(e.a.y, e.b.y), std::min(f.a.y, f.b.y));
+        if (low_x > std::min(std::max(e.a.x, e.b.x), std::max(f.a.x, f.b.x))) continue;
+        if (low_y > std::min(std::max(e.a.y, e.b.y), std::max(f.a.y, f.b.y))) continue;
+        if (cell_x(low_x) != cx || cell_y(low_y) != cy) continue;
+        if (adjacent(e, f, ring_sizes)) continue;
+        if (!segments_intersect(e.a, e.b, f.a, f.b)) continue;
+        const Edge& first = std::pair(e.ring, e.index) < std::pair(f.ring, f.index) ? e : f;
+        const Edge& second = &first == &e ? f : e;
+        if (better(first)) best = Crossing{&first, &second};
+      }
+    }
+  }
+  return best;
+}
+
+struct Box {
+  double min_x, min_y, max_x, max_y;
+  bool overlaps(const Box& o) const {
+    return min_x <= o.max_x && o.min_x <= max_x && min_y <= o.max_y && o.min_y <= max_y;
+  }
+};
+
+Box box_of(const Ring& ring) {
+  Box box{ring[0].x, ring[0].y, ring[0].x, ring[0].y};
+  for (Vec2 p : ring) {
+    box.min_x = std::min(box.min_x, p.x);
+    box.max_x = std::max(box.max_x, p.x);
+    box.min_y = std::min(box.min_y, p.y);
+    box.max_y = std::max(box.max_y, p.y);
+  }
+  return box;
+}
+
+}  // namespace
+
+std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source) {
+  const std::string file(source);
+  if (regions.empty()) throw InputError(file + ": no polygon");
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    Region& region = regions[r];
+    const std::string region_name = "region " + std::to_string(r + 1);
+    auto ring_name = [&](int ring) {
+      return ring == 0 ? region_name + " outer boundary"
+                       : region_name + " hole " + std::to_string(ring);
+    };
+    auto fail = [&](const std::string& problem) -> void {
+      throw InputError(file + ": " + problem);
+    };
+    auto clean_ring = [&](Ring& ring, int ring_index) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
+          fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
+               " has a NaN or infinite coordinate");
+        }
+      }
+      ring = remove_degenerate_vertices(ring);
+      if (ring.size() < 3) {
+        fail(ring_name(ring_index) +
+             ": fewer than 3 distinct points after removing repeated and collinear vertices");
+      }
+      const double area = signed_area(ring);
+      if (area == 0.0) fail(ring_name(ring_index) + ": zero area");
+      const bool want_ccw = ring_index == 0;
+      if ((area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
+    };
+    clean_ring(region.outer, 0);
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      clean_ring(region.holes[h], static_cast<int>(h + 1));
+    }
+
+    std::vector<Edge> edges;
+    std::vector<std::size_t> ring_sizes;
+    auto add_edges = [&](const Ring& ring, int ring_index) {
+      ring_sizes.push_back(ring.size());
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        edges.push_back({ring_index, i, ring[i], ring[(i + 1) % ring.size()]});
+      }
+    };
+    add_edges(region.outer, 0);
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      add_edges(region.holes[h], static_cast<int>(h + 1));
+    }
+    if (const auto crossing = find_crossing(edges, ring_sizes)) {
+      const Edge& e = *crossing->first;
+      const Edge& f = *crossing->second;
+      const std::string where = " (edge " + format_point(e.a) + "-" + format_point(e.b) +
+                                " meets edge " + format_point(f.a) + "-" + format_point(f.b) + ")";
+      if (e.ring == f.ring) {
+        fail(ring_name(e.ring) + ": self-intersection" + where);
+      } else if (e.ring == 0) {
+        fail(ring_name(f.ring) + " crosses or touches the outer boundary" + where);
+      } else {
+        fail(region_name + ": holes " + std::to_string(e.ring) + " and " + std::to_string(f.ring) +
+             " cross or touch" + where);
+      }
+    }
+    // No boundaries meet, so one vertex decides containment.
+    std::vector<Box> boxes;
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      const Ring& hole = region.holes[h];
+      if (locate_point(region.outer, hole[0]) != Location::inside) {
+        fail(ring_name(static_cast<int>(h + 1)) + " is outside the outer boundary");
+      }
+      boxes.push_back(box_of(hole));
+    }
+    for (std::size_t a = 0; a < region.holes.size(); ++a) {
+      for (std::size_t b = a + 1; b < region.holes.size(); ++b) {
+        if (!boxes[a].overlaps(boxes[b])) continue;
+        if (locate_point(region.holes[b], region.holes[a][0]) == Location::inside ||
+            locate_point(region.holes[a], region.holes[b][0]) == Location::inside) {
+          fail(region_name + ": holes " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+               " overlap");
+        }
+      }
+    }
+  }
+  return regions;
+}
+
+}  // namespace hullcook

@@ -1,0 +1,602 @@
+#include "hullcook/core/decompose.h"
+
+#include "hullcook/core/clean.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
+#include "pocket_paths.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace hullcook {
+
+std::optional<Measure> parse_measure(std::string_view name) {
+  if (name == "sl") return Measure::sl;
+  if (name == "sp") return Measure::sp;
+  if (name == "h1") return Measure::h1;
+  if (name == "h2") return Measure::h2;
+  return std::nullopt;
+}
+
+const char* measure_name(Measure measure) {
+  switch (measure) {
+    case Measure::sl:
+      return "sl";
+    case Measure::sp:
+      return "sp";
+    case Measure::h1:
+      return "h1";
+    case Measure::h2:
+      return "h2";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// The outer boundary's concavity under a measure.
+struct OuterConcavity {
+  std::vector<double> vertex;   // per vertex: the value Eq. 8 and the witness use
+  double value = 0.0;           // decides splitting (for H2: the H1 value, see decompose.h)
+  std::size_t witness = kNone;  // the notch with the largest vertex value
+};
+
+bool is_notch(const Ring& ring, std::size_t i) {
+  const std::size_t n = ring.size();
+  return orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) < 0;
+}
+
+OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau) {
+  const std::size_t n = ring.size();
+  OuterConcavity result;
+  result.vertex.assign(n, 0.0);
+  std::vector<std::size_t> hull = convex_hull_indices(ring);
+  if (hull.size() < 3) return result;
+  std::vector<char> on_hull(n, 0);
+  for (std::size_t h : hull) on_hull[h] = 1;
+  // Vertices exactly on a hull edge split its bridge, so every pocket polygon stays simple.
+  for (std::size_t k = 0; k < hull.size(); ++k) {
+    const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
+    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+      if (orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
+    }
+  }
+  std::size_t start = 0;
+  while (!on_hull[start]) ++start;
+  std::vector<Vec2> chain;
+  double best_witness_value = -1.0;
+  for (std::size_t step = 0; step < n; ++step) {
+    const std::size_t s = (start + step) % n;
+    if (!on_hull[s]) continue;
+    std::size_t t = (s + 1) % n;
+    if (on_hull[t]) continue;
+    while (!on_hull[t]) t = (t + 1) % n;
+    const Vec2 bs = ring[s], bt = ring[t];
+    const Vec2 along = bt - bs;
+    const double length = std::hypot(along.x, along.y);
+    // SL: distance to the bridge's line.
+    double sl_max = 0.0;
+    bool hazard = false;
+    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+      const double d = std::abs(orient2d(bs, bt, ring[i])) / length;
+      result.vertex[i] = d;
+      sl_max = std::max(sl_max, d);
+    }
+    if (measure != Measure::sl) {
+      // Observation 5.5: an edge whose outward normal opposes the bridge's.
+      for (std::size_t i = s; i != t && !hazard; i = (i + 1) % n) {
+        const Vec2 e = ring[(i + 1) % n] - ring[i];
+        hazard = e.x * along.x + e.y * along.y < 0.0;
+      }
+    }
+    const bool use_sp = measure == Measure::sp || (measure != Measure::sl && hazard);
+    double pocket_value = sl_max;
+    bool vertex_is_sl = true;
+    if (use_sp) {
+      chain.clear();
+      for (std::size_t i = s;; i = (i + 1) % n) {
+        chain.push_back(ring[i]);
+        if (i == t) break;
+      }
+      const std::vector<double> paths = detail::shortest_paths_to_bridge(chain);
+      double sp_max = 0.0;
+      for (double d : paths) sp_max = std::max(sp_max, d);
+      pocket_value = sp_max;
+      // H2 keeps the straight-line values (and witness) of a pocket already deeper than τ.
+      if (!(measure == Measure::h2 && sl_max > tau)) {
+        vertex_is_sl = false;
+        std::size_t k = 1;
+        for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) result.vertex[i] = paths[k++];
+      }
+    }
+    (void)vertex_is_sl;
+    result.value = std::max(result.value, pocket_value);
+    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+      if (result.vertex[i] > best_witness_value && is_notch(ring, i)) {
+        best_witness_value = result.vertex[i];
+        result.witness = i;
+      }
+    }
+  }
+  return result;
+}
+
+// Eq. 5 for every hole: antipodal pair from the principal axis, depth through the closest vertex.
+struct HoleConcavity {
+  std::size_t joined = 0;   // hole vertex joined to the boundary first (p)
+  std::size_t far_end = 0;  // its antipode cw(p)
+  int closest_ring = 0;     // ring holding the closest vertex x: 0 outer, h+1 hole h
+  std::size_t closest = 0;  // its index
+  double value = 0.0;
+};
+
+std::pair<std::size_t, std::size_t> principal_axis_extremes(const Ring& hole) {
+  Vec2 mean{0.0, 0.0};
+  for (Vec2 p : hole) mean += p;
+  mean /= double(hole.size());
+  double xx = 0.0, xy = 0.0, yy = 0.0;
+  for (Vec2 p : hole) {
+    const Vec2 d = p - mean;
+    xx += d.x * d.x;
+    xy += d.x * d.y;
+    yy += d.y * d.y;
+  }
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+  const Vec2 axis{std::cos(angle), std::sin(angle)};
+  std::size_t low = 0, high = 0;
+  double low_value = std::numeric_limits<double>::infinity(), high_value = -low_value;
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    const double v = (hole[i].x - mean.x) * axis.x + (hole[i].y - mean.y) * axis.y;
+    if (v < low_value) low_value = v, low = i;
+    if (v > high_value) high_value = v, high = i;
+  }
+  return {low, high};
+}
+
+std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcavity& outer) {
+  const std::size_t k = region.holes.size();
+  std::vector<HoleConcavity> holes(k);
+  const double delta = outer.value;
+  std::vector<HoleConcavity> outer_fallback(k);
+  for (std::size_t h = 0; h < k; ++h) {
+    const Ring& hole = region.holes[h];
+    const auto [p, q] = principal_axis_extremes(hole);
+    double best = std::numeric_limits<double>::infinity();
+    double best_outer = best;
+    HoleConcavity info, info_outer;
+    auto consider = [&](const Ring& ring, int ring_id) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        for (std::size_t end : {p, q}) {
+          const double d = distance(ring[i], hole[end]);
+          if (d < best) {
+            best = d;
+            info.closest_ring = ring_id, info.closest = i, info.joined = end;
+            info.far_end = end == p ? q : p;
+          }
+          if (ring_id == 0 && d < best_outer) {
+            best_outer = d;
+            info_outer.closest_ring = 0, info_outer.closest = i, info_outer.joined = end;
+            info_outer.far_end = end == p ? q : p;
+          }
+        }
+      }
+    };
+    consider(region.outer, 0);
+    for (std::size_t o = 0; o < k; ++o) {
+      if (o != h) consider(region.holes[o], static_cast<int>(o + 1));
+    }
+    holes[h] = info;
+    outer_fallback[h] = info_outer;
+  }
+  // Depth through the chain of closest vertices (Fig. 12(b)); a cycle falls back to ∂P0.
+  std::vector<int> state(k, 0);  // 0 new, 1 in progress, 2 done
+  auto vertex_of = [&](const HoleConcavity& info) {
+    return info.closest_ring == 0 ? region.outer[info.closest]
+                                  : region.holes[std::size_t(info.closest_ring - 1)][info.closest];
+  };
+  auto evaluate = [&](auto&& self, std::size_t h) -> double {
+    if (state[h] == 2) return holes[h].value;
+    state[h] = 1;
+    HoleConcavity& info = holes[h];
+    if (info.closest_ring != 0 && state[std::size_t(info.closest_ring - 1)] == 1) {
+      info = outer_fallback[h];
+    }
+    const Ring& hole = region.holes[h];
+    double base = info.closest_ring == 0 ? outer.vertex[info.closest]
+                                         : self(self, std::size_t(info.closest_ring - 1));
+    info.value = base + distance(vertex_of(info), hole[info.joined]) +
+                 distance(hole[info.joined], hole[info.far_end]) + delta;
+    state[h] = 2;
+    return info.value;
+  };
+  for (std::size_t h = 0; h < k; ++h) evaluate(evaluate, h);
+  return holes;
+}
+
+// A vertex of the region: ring 0 is the outer boundary, ring h + 1 is hole h.
+struct VertexRef {
+  int ring;
+  std::size_t index;
+};
+
+class RegionView {
+ public:
+  explicit RegionView(const Region& region) : region_(region) {}
+  const Ring& ring(int r) const {
+    return r == 0 ? region_.outer : region_.holes[static_cast<std::size_t>(r - 1)];
+  }
+  Vec2 at(VertexRef v) const { return ring(v.ring)[v.index]; }
+  Vec2 prev(VertexRef v) const {
+    const Ring& r = ring(v.ring);
+    return r[(v.index + r.size() - 1) % r.size()];
+  }
+  Vec2 next(VertexRef v) const {
+    const Ring& r = ring(v.ring);
+    return r[(v.index + 1) % r.size()];
+  }
+  int ring_count() const { return 1 + static_cast<int>(region_.holes.size()); }
+
+  // The open segment from v toward target leaves v into the interior (O'Rourke's InCone).
+  bool in_cone(VertexRef v, Vec2 target) const {
+    const Vec2 a = at(v), before = prev(v), after = next(v);
+    if (orientation(a, after, before) >= 0) {
+      return orientation(a, target, before) > 0 && orientation(target, a, after) > 0;
+    }
+    return !(orientation(a, target, after) >= 0 && orientation(target, a, before) >= 0);
+  }
+
+  // u-v is a diagonal: inside at both ends and meeting no other edge, not even at a vertex.
+  bool is_diagonal(VertexRef u, VertexRef v) const {
+    const Vec2 a = at(u), b = at(v);
+    if (a == b || !in_cone(u, b) || !in_cone(v, a)) return false;
+    const double min_x = std::min(a.x, b.x), max_x = std::max(a.x, b.x);
+    const double min_y = std::min(a.y, b.y), max_y = std::max(a.y, b.y);
+    for (int r = 0; r < ring_count(); ++r) {
+      const Ring& points = ring(r);
+      const std::size_t n = points.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        const Vec2 c = points[i], d = points[j];
+        if (std::max(c.x, d.x) < min_x || std::min(c.x, d.x) > max_x ||
+            std::max(c.y, d.y) < min_y || std::min(c.y, d.y) > max_y) {
+          continue;
+        }
+        auto is = [&](VertexRef w, std::size_t k) { return w.ring == r && w.index == k; };
+        if (is(u, i) || is(u, j) || is(v, i) || is(v, j)) continue;
+        if (segments_intersect(a, b, c, d)) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  const Region& region_;
+};
+
+// Cuts the outer ring along the diagonal i-j; holes go to the piece containing them.
+std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::size_t j) {
+  const Ring& ring = region.outer;
+  const std::size_t n = ring.size();
+  Region first, second;
+  for (std::size_t k = i;; k = (k + 1) % n) {
+    first.outer.push_back(ring[k]);
+    if (k == j) break;
+  }
+  for (std::size_t k = j;; k = (k + 1) % n) {
+    second.outer.push_back(ring[k]);
+    if (k == i) break;
+  }
+  first.outer = remove_degenerate_vertices(first.outer);
+  second.outer = remove_degenerate_vertices(second.outer);
+  for (const Ring& hole : region.holes) {
+    (locate_point(first.outer, hole[0]) == Location::inside ? first : second).holes.push_back(hole);
+  }
+  return {std::move(first), std::move(second)};
+}
+
+// Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole.
+std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::size_t p,
+                                     std::size_t x, std::size_t q, std::size_t y) {
+  const Ring& outer = region.outer;
+  const Ring& hole = region.holes[h];
+  const std::size_t n = outer.size(), m = hole.size();
+  Region first, second;
+  for (std::size_t k = x;; k = (k + 1) % n) {
+    first.outer.push_back(outer[k]);
+    if (k == y) break;
+  }
+  for (std::size_t k = q;; k = (k + 1) % m) {
+    first.outer.push_back(hole[k]);
+    if (k == p) break;
+  }
+  for (std::size_t k = y;; k = (k + 1) % n) {
+    second.outer.push_back(outer[k]);
+    if (k == x) break;
+  }
+  for (std::size_t k = p;; k = (k + 1) % m) {
+    second.outer.push_back(hole[k]);
+    if (k == q) break;
+  }
+  first.outer = remove_degenerate_vertices(first.outer);
+  second.outer = remove_degenerate_vertices(second.outer);
+  for (std::size_t o = 0; o < region.holes.size(); ++o) {
+    if (o == h) continue;
+    const Ring& other = region.holes[o];
+    (locate_point(first.outer, other[0]) == Location::inside ? first : second)
+        .holes.push_back(other);
+  }
+  return {std::move(first), std::move(second)};
+}
+
+struct Evaluation {
+  OuterConcavity outer;
+  std::vector<HoleConcavity> holes;
+  double value = 0.0;
+  int deepest_hole = -1;
+};
+
+Evaluation evaluate(const Region& region, Measure measure, double tau) {
+  Evaluation e;
+  e.outer = measure_outer(region.outer, measure, tau);
+  e.value = e.outer.value;
+  if (!region.holes.empty()) {
+    e.holes = measure_holes(region, e.outer);
+    for (std::size_t h = 0; h < e.holes.size(); ++h) {
+      if (e.holes[h].value > e.value || e.deepest_hole < 0) {
+        if (e.holes[h].value > e.value) e.value = e.holes[h].value;
+        e.deepest_hole = static_cast<int>(h);
+      }
+    }
+    double deepest = -1.0;
+    for (std::size_t h = 0; h < e.holes.size(); ++h) {
+      if (e.holes[h].value > deepest) deepest = e.holes[h].value, e.deepest_hole = int(h);
+    }
+  }
+  return e;
+}
+
+// Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
+std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
+                                                       const OuterConcavity& concavity,
+                                                       std::size_t r,
+                                                       const DecomposeSettings& settings) {
+  const Ring& ring = region.outer;
+  const std::size_t n = ring.size();
+  const RegionView view(region);
+  const Vec2 a = ring[(r + n - 1) % n], pr = ring[r], b = ring[(r + 1) % n];
+  struct Candidate {
+    double score;
+    std::size_t index;
+  };
+  std::vector<Candidate> resolving, others;
+  // The reflex angle's bisector, for diagonals that can only reduce the notch.
+  Vec2 in_a = a - pr, in_b = b - pr;
+  in_a /= std::hypot(in_a.x, in_a.y);
+  in_b /= std::hypot(in_b.x, in_b.y);
+  Vec2 bisector = -(in_a + in_b);
+  if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == r || i == (r + 1) % n || i == (r + n - 1) % n) continue;
+    const Vec2 x = ring[i];
+    const double length = distance(pr, x);
+    if (orientation(a, pr, x) >= 0 && orientation(x, pr, b) >= 0) {
+      resolving.push_back({(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length), i});
+    } else {
+      const Vec2 d = (x - pr) / length;
+      others.push_back({d.x * bisector.x + d.y * bisector.y, i});
+    }
+  }
+  auto by_score = [](const Candidate& u, const Candidate& v) {
+    return u.score != v.score ? u.score > v.score : u.index < v.index;
+  };
+  for (auto* list : {&resolving, &others}) {
+    std::sort(list->begin(), list->end(), by_score);
+    for (const Candidate& c : *list) {
+      if (view.is_diagonal({0, r}, {0, c.index})) return split_outer(region, r, c.index);
+    }
+  }
+  return std::nullopt;
+}
+
+// Algorithm 4.2 for a hole: join p to the closest visible vertex of ∂P0, and its antipode to the
+// best vertex of ∂P0 by Eq. 8, so the hole opens into two simple pieces.
+std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, const Evaluation& e,
+                                                      std::size_t h,
+                                                      const DecomposeSettings& settings) {
+  const RegionView view(region);
+  const Ring& outer = region.outer;
+  const Ring& hole = region.holes[h];
+  const int hole_ring = static_cast<int>(h + 1);
+  auto closest_visible = [&](std::size_t p, std::size_t skip) -> std::size_t {
+    std::vector<std::size_t> order(outer.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::vector<double> d(outer.size());
+    for (std::size_t i = 0; i < outer.size(); ++i) d[i] = distance(outer[i], hole[p]);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t u, std::size_t v) { return d[u] != d[v] ? d[u] < d[v] : u < v; });
+    for (std::size_t i : order) {
+      if (i != skip && view.is_diagonal({hole_ring, p}, {0, i})) return i;
+    }
+    return kNone;
+  };
+  auto best_second = [&](std::size_t p, std::size_t x, std::size_t q) -> std::size_t {
+    struct Candidate {
+      double score;
+      std::size_t index;
+    };
+    std::vector<Candidate> candidates;
+    for (std::size_t i = 0; i < outer.size(); ++i) {
+      if (i == x) continue;
+      candidates.push_back(
+          {(1.0 + settings.sc * e.outer.vertex[i]) / (settings.sd * distance(outer[i], hole[q])),
+           i});
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& u, const Candidate& v) {
+      return u.score != v.score ? u.score > v.score : u.index < v.index;
+    });
+    for (const Candidate& c : candidates) {
+      if (!view.is_diagonal({hole_ring, q}, {0, c.index})) continue;
+      if (segments_intersect(hole[p], outer[x], hole[q], outer[c.index])) continue;
+      return c.index;
+    }
+    return kNone;
+  };
+  const HoleConcavity& info = e.holes[h];
+  std::vector<std::pair<std::size_t, std::size_t>> attempts{{info.joined, info.far_end},
+                                                            {info.far_end, info.joined}};
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    attempts.emplace_back(i, (i + hole.size() / 2) % hole.size());
+  }
+  for (const auto& [p, q] : attempts) {
+    if (p == q) continue;
+    const std::size_t x = closest_visible(p, kNone);
+    if (x == kNone) continue;
+    const std::size_t y = best_second(p, x, q);
+    if (y == kNone) continue;
+    return split_hole(region, h, p, x, q, y);
+  }
+  return std::nullopt;
+}
+
+Piece make_piece(const Region& component, double concavity) {
+  return Piece{component, convex_hull(component.outer), concavity};
+}
+
+}  // namespace
+
+double measure_concavity(const Region& region, Measure measure, double tau) {
+  return evaluate(region, measure, tau).value;
+}
+
+std::vector<double> outer_vertex_concavity(const Ring& outer, Measure measure, double tau) {
+  return measure_outer(outer, measure, tau).vertex;
+}
+
+DecompositionTree decompose(const Region& region, const DecomposeSettings& settings) {
+  if (!(settings.tau >= 0.0)) throw std::invalid_argument("decompose: tau must be >= 0");
+  DecompositionTree tree;
+  tree.tau_ = settings.tau;
+  tree.measure_ = settings.measure;
+  tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
+  std::vector<int> pending{0};
+  while (!pending.empty()) {
+    const int id = pending.back();
+    pending.pop_back();
+    const Region component = tree.nodes_[std::size_t(id)].component;
+    const Evaluation e = evaluate(component, settings.measure, settings.tau);
+    tree.nodes_[std::size_t(id)].concavity = e.value;
+    if (!(e.value > settings.tau)) continue;
+    std::optional<std::pair<Region, Region>> parts;
+    Witness witness;
+    if (e.deepest_hole >= 0 && e.holes[std::size_t(e.deepest_hole)].value > settings.tau) {
+      // Fig. 12(b): a hole whose closest vertex lies on another hole waits for that hole.
+      std::size_t h = std::size_t(e.deepest_hole);
+      for (std::size_t guard = 0; guard < e.holes.size() && e.holes[h].closest_ring != 0; ++guard) {
+        h = std::size_t(e.holes[h].closest_ring - 1);
+      }
+      parts = resolve_hole(component, e, h, settings);
+      for (std::size_t o = 0; !parts && o < component.holes.size(); ++o) {
+        if (o != h) parts = resolve_hole(component, e, o, settings), h = o;
+      }
+      witness = {component.holes[h][e.holes[h].joined], static_cast<int>(h)};
+    } else if (e.outer.witness != kNone) {
+      parts = resolve_notch(component, e.outer, e.outer.witness, settings);
+      witness = {component.outer[e.outer.witness], -1};
+    }
+    if (!parts) continue;  // cannot happen on a valid region; keep the node whole
+    const int first = static_cast<int>(tree.nodes_.size());
+    tree.nodes_.push_back({std::move(parts->first), 0.0, {}, {-1, -1}});
+    tree.nodes_.push_back({std::move(parts->second), 0.0, {}, {-1, -1}});
+    auto& node = tree.nodes_[std::size_t(id)];
+    node.witness = witness;
+    node.children[0] = first;
+    node.children[1] = first + 1;
+    pending.push_back(first + 1);
+    pending.push_back(first);
+  }
+  return tree;
+}
+
+std::size_t DecompositionTree::piece_count_at(double tau) const {
+  std::size_t count = 0;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Node& node = nodes_[std::size_t(stack.back())];
+    stack.pop_back();
+    if (node.is_leaf() || node.concavity <= tau) {
+      ++count;
+    } else {
+      stack.push_back(node.children[1]);
+      stack.push_back(node.children[0]);
+    }
+  }
+  return count;
+}
+
+std::vector<Piece> DecompositionTree::pieces_at(double tau) const {
+  std::vector<Piece> pieces;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Node& node = nodes_[std::size_t(stack.back())];
+    stack.pop_back();
+    if (node.is_leaf() || node.concavity <= tau) {
+      pieces.push_back(make_piece(node.component, node.concavity));
+    } else {
+      stack.push_back(node.children[1]);
+      stack.push_back(node.children[0]);
+    }
+  }
+  return pieces;
+}
+
+std::vector<double> DecompositionTree::level_taus() const {
+  std::vector<double> taus{tau_};
+  for (const Node& node : nodes_) {
+    if (!node.is_leaf() && node.concavity >= tau_) taus.push_back(node.concavity);
+  }
+  std::sort(taus.begin(), taus.end());
+  taus.erase(std::unique(taus.begin(), taus.end()), taus.end());
+  return taus;
+}
+
+std::vector<Piece> DecompositionTree::pieces_within(std::size_t max_pieces) const {
+  const std::size_t budget = std::max<std::size_t>(max_pieces, 1);
+  const std::vector<double> taus = level_taus();
+  // The piece count does not grow with τ: binary search for the finest level within budget.
+  std::size_t low = 0, high = taus.size() - 1;
+  if (piece_count_at(taus[high]) > budget)
+    return pieces_at(std::numeric_limits<double>::infinity());
+  while (low < high) {
+    const std::size_t middle = (low + high) / 2;
+    if (piece_count_at(taus[middle]) <= budget) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return pieces_at(taus[low]);
+}
+
+double convexity(const std::vector<Piece>& pieces) {
+  double area = 0.0, hull_area = 0.0;
+  for (const Piece& piece : pieces) {
+    area += region_area(piece.component);
+    hull_area += std::abs(signed_area(piece.hull));
+  }
+  return hull_area > 0.0 ? area / hull_area : 1.0;
+}
+
+double max_concavity(const std::vector<Piece>& pieces) {
+  double value = 0.0;
+  for (const Piece& piece : pieces) value = std::max(value, piece.concavity);
+  return value;
+}
+
+}  // namespace hullcook

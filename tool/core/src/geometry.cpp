@@ -1,0 +1,167 @@
+#include "hullcook/core/geometry.h"
+
+#include "hullcook/core/predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+namespace hullcook {
+
+double signed_area(const Ring& ring) {
+  if (ring.size() < 3) return 0.0;
+  // Relative to the first vertex, so that far-from-origin coordinates keep their precision.
+  const Vec2 origin = ring.front();
+  double twice = 0.0;
+  for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
+    const Vec2 a = ring[i] - origin;
+    const Vec2 b = ring[i + 1] - origin;
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * twice;
+}
+
+double region_area(const Region& region) {
+  double area = std::abs(signed_area(region.outer));
+  for (const Ring& hole : region.holes) area -= std::abs(signed_area(hole));
+  return area;
+}
+
+std::vector<std::size_t> convex_hull_indices(const Ring& points) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (points[a].x != points[b].x) return points[a].x < points[b].x;
+    if (points[a].y != points[b].y) return points[a].y < points[b].y;
+    return a < b;
+  });
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
+              order.end());
+  if (order.size() < 3) return order;
+  std::vector<std::size_t> hull(2 * order.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    while (k >= 2 && orientation(points[hull[k - 2]], points[hull[k - 1]], points[order[i]]) <= 0) {
+      --k;
+    }
+    hull[k++] = order[i];
+  }
+  for (std::size_t i = order.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower &&
+           orientation(points[hull[k - 2]], points[hull[k - 1]], points[order[i]]) <= 0) {
+      --k;
+    }
+    hull[k++] = order[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+Ring convex_hull(const Ring& points) {
+  Ring hull;
+  for (std::size_t index : convex_hull_indices(points)) hull.push_back(points[index]);
+  return hull;
+}
+
+Location locate_point(const Ring& ring, Vec2 p) {
+  bool inside = false;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = ring[j];
+    const Vec2 b = ring[i];
+    if (on_segment(a, b, p)) return Location::boundary;
+    // Half-open rule on y; the side test is exact.
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const int side = orientation(a, b, p);
+      if ((b.y > a.y) ? side > 0 : side < 0) inside = !inside;
+    }
+  }
+  return inside ? Location::inside : Location::outside;
+}
+
+Location locate_point(const Region& region, Vec2 p) {
+  Location where = locate_point(region.outer, p);
+  if (where != Location::inside) return where;
+  for (const Ring& hole : region.holes) {
+    const Location in_hole = locate_point(hole, p);
+    if (in_hole == Location::boundary) return Location::boundary;
+    if (in_hole == Location::inside) return Location::outside;
+  }
+  return Location::inside;
+}
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.x * ab.x + ab.y * ab.y;
+  double t = length2 > 0.0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Vec2 d = p - (a + ab * t);
+  return std::sqrt(d.x * d.x + d.y * d.y);
+}
+
+namespace {
+
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+Circle circle_of_two(Vec2 a, Vec2 b) { return {(a + b) * 0.5, distance(a, b) * 0.5}; }
+
+Circle circle_of_three(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 ab = b - a;
+  const Vec2 ac = c - a;
+  const double d = 2.0 * (ab.x * ac.y - ab.y * ac.x);
+  if (d == 0.0) {
+    // Collinear: the circle on the two farthest points.
+    Circle best = circle_of_two(a, b);
+    for (Circle candidate : {circle_of_two(a, c), circle_of_two(b, c)}) {
+      if (candidate.radius > best.radius) best = candidate;
+    }
+    return best;
+  }
+  const double ab2 = ab.x * ab.x + ab.y * ab.y;
+  const double ac2 = ac.x * ac.x + ac.y * ac.y;
+  const Vec2 offset{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
+  return {a + offset, std::hypot(offset.x, offset.y)};
+}
+
+bool contains(const Circle& circle, Vec2 p) {
+  // Relative slack: the circle's own rounding must not restart the search forever.
+  return distance(circle.center, p) <= circle.radius * (1.0 + 1e-12) + 1e-300;
+}
+
+}  // namespace
+
+Circle minimum_enclosing_circle(const Ring& input) {
+  if (input.empty()) return {};
+  Ring points = convex_hull(input);
+  // A fixed-seed Fisher-Yates shuffle with a 64-bit LCG: deterministic on every platform.
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (std::size_t i = points.size(); i > 1; --i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    std::swap(points[i - 1], points[(state >> 33) % i]);
+  }
+  Circle circle{points[0], 0.0};
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (contains(circle, points[i])) continue;
+    circle = {points[i], 0.0};
+    for (std::size_t j = 0; j < i; ++j) {
+      if (contains(circle, points[j])) continue;
+      circle = circle_of_two(points[i], points[j]);
+      for (std::size_t k = 0; k < j; ++k) {
+        if (!contains(circle, points[k])) circle = circle_of_three(points[i], points[j], points[k]);
+      }
+    }
+  }
+  return circle;
+}
+
+double enclosing_radius(const std::vector<Region>& regions) {
+  Ring points;
+  for (const Region& region : regions) {
+    points.insert(points.end(), region.outer.begin(), region.outer.end());
+  }
+  return minimum_enclosing_circle(points).radius;
+}
+
+}  // namespace hullcook

@@ -1,0 +1,198 @@
+#include "pocket_paths.h"
+
+#include "hullcook/core/predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace hullcook::detail {
+
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
+  const int n = static_cast<int>(polygon.size());
+  std::vector<std::array<int, 3>> triangles;
+  if (n < 3) return triangles;
+  triangles.reserve(static_cast<std::size_t>(n - 2));
+  std::vector<int> prev(static_cast<std::size_t>(n)), next(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    prev[static_cast<std::size_t>(i)] = (i + n - 1) % n;
+    next[static_cast<std::size_t>(i)] = (i + 1) % n;
+  }
+  auto at = [&](int i) { return polygon[static_cast<std::size_t>(i)]; };
+  auto P = [&](int i) { return prev[static_cast<std::size_t>(i)]; };
+  auto N = [&](int i) { return next[static_cast<std::size_t>(i)]; };
+  std::vector<char> reflex(static_cast<std::size_t>(n), 0), removed(static_cast<std::size_t>(n), 0);
+  std::vector<int> reflex_list;
+  auto update_reflex = [&](int i) {
+    const bool is_reflex = orientation(at(P(i)), at(i), at(N(i))) <= 0;
+    if (is_reflex && !reflex[static_cast<std::size_t>(i)]) reflex_list.push_back(i);
+    reflex[static_cast<std::size_t>(i)] = is_reflex;
+  };
+  for (int i = 0; i < n; ++i) update_reflex(i);
+  auto is_ear = [&](int i) {
+    const int a = P(i), c = N(i);
+    if (orientation(at(a), at(i), at(c)) <= 0) return false;
+    const Vec2 pa = at(a), pb = at(i), pc = at(c);
+    const double min_x = std::min({pa.x, pb.x, pc.x}), max_x = std::max({pa.x, pb.x, pc.x});
+    const double min_y = std::min({pa.y, pb.y, pc.y}), max_y = std::max({pa.y, pb.y, pc.y});
+    for (int r : reflex_list) {
+      if (!reflex[static_cast<std::size_t>(r)] || removed[static_cast<std::size_t>(r)]) continue;
+      if (r == a || r == i || r == c) continue;
+      const Vec2 p = at(r);
+      if (p.x < min_x || p.x > max_x || p.y < min_y || p.y > max_y) continue;
+      if (orientation(pa, pb, p) >= 0 && orientation(pb, pc, p) >= 0 &&
+          orientation(pc, pa, p) >= 0) {
+        return false;
+      }
+    }
+    return true;
+  };
+  int remaining = n;
+  int current = 0;
+  int since_last_ear = 0;
+  while (remaining > 3) {
+    if (reflex_list.size() > 64 && reflex_list.size() > 2 * static_cast<std::size_t>(remaining)) {
+      std::erase_if(reflex_list, [&](int r) {
+        return removed[static_cast<std::size_t>(r)] || !reflex[static_cast<std::size_t>(r)];
+      });
+    }
+    const bool degenerate_fallback = since_last_ear > remaining;
+    if (is_ear(current) ||
+        (degenerate_fallback && orientation(at(P(current)), at(current), at(N(current))) >= 0) ||
+        since_last_ear > 2 * remaining) {
+      const int a = P(current), c = N(current);
+      triangles.push_back({a, current, c});
+      removed[static_cast<std::size_t>(current)] = 1;
+      next[static_cast<std::size_t>(a)] = c;
+      prev[static_cast<std::size_t>(c)] = a;
+      --remaining;
+      if (reflex[static_cast<std::size_t>(a)]) update_reflex(a);
+      if (reflex[static_cast<std::size_t>(c)]) update_reflex(c);
+      current = a;
+      since_last_ear = 0;
+    } else {
+      current = N(current);
+      ++since_last_ear;
+    }
+  }
+  triangles.push_back({P(current), current, N(current)});
+  return triangles;
+}
+
+std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
+  const int m = static_cast<int>(q.size()) - 1;
+  std::vector<double> distance(q.size(), 0.0);
+  if (m < 2) return distance;
+  const Vec2 s = q.front();
+  const Vec2 t = q.back();
+  const Vec2 along = t - s;
+  const double length = std::hypot(along.x, along.y);
+  const Vec2 normal{-along.y / length, along.x / length};  // into the pocket
+
+  // The pocket polygon q[0..m] runs clockwise; triangulate it reversed (counter-clockwise).
+  std::vector<Vec2> ccw(q.rbegin(), q.rend());
+  std::vector<std::array<int, 3>> triangles = triangulate(ccw);
+  for (auto& triangle : triangles) {
+    for (int& v : triangle) v = m - v;
+  }
+  // Adjacency through shared edges.
+  const std::size_t count = triangles.size();
+  std::vector<std::pair<long long, int>> edge_keys;
+  edge_keys.reserve(3 * count);
+  auto key = [&](int u, int v) {
+    if (u > v) std::swap(u, v);
+    return static_cast<long long>(u) * (m + 1) + v;
+  };
+  for (std::size_t i = 0; i < count; ++i) {
+    for (int e = 0; e < 3; ++e) {
+      edge_keys.emplace_back(key(triangles[i][e], triangles[i][(e + 1) % 3]), static_cast<int>(i));
+    }
+  }
+  std::sort(edge_keys.begin(), edge_keys.end());
+  auto neighbour = [&](int triangle, int u, int v) {
+    const long long k = key(u, v);
+    auto it = std::lower_bound(edge_keys.begin(), edge_keys.end(), std::pair(k, -1));
+    for (; it != edge_keys.end() && it->first == k; ++it) {
+      if (it->second != triangle) return it->second;
+    }
+    return -1;
+  };
+  const int root = neighbour(-1, 0, m);
+  if (root < 0) return distance;
+
+  constexpr int kInfinity = -1;  // the bridge seen as a source at infinity below it
+  auto point = [&](int v) { return q[static_cast<std::size_t>(v)]; };
+  // orient(F[j+1], F[j], w) with F[j+1] possibly the source at infinity.
+  auto turn = [&](int from, int via, Vec2 w) -> double {
+    if (from == kInfinity) {
+      const Vec2 d = point(via) - w;
+      return d.x * along.x + d.y * along.y;
+    }
+    return orient2d(point(from), point(via), w);
+  };
+
+  struct Task {
+    int triangle;
+    int a, b;
+    std::vector<int> funnel;
+    int apex;
+  };
+  std::vector<Task> stack;
+  stack.push_back({root, 0, m, {0, kInfinity, m}, 1});
+  while (!stack.empty()) {
+    Task task = std::move(stack.back());
+    stack.pop_back();
+    const auto& tri = triangles[static_cast<std::size_t>(task.triangle)];
+    int w = -1;
+    for (int v : tri) {
+      if (v != task.a && v != task.b) w = v;
+    }
+    const Vec2 pw = point(w);
+    const std::vector<int>& f = task.funnel;
+    const int apex = task.apex;
+    const int size = static_cast<int>(f.size());
+    int wrap = -1;
+    for (int j = 0; j < apex; ++j) {
+      if (turn(f[static_cast<std::size_t>(j + 1)], f[static_cast<std::size_t>(j)], pw) > 0) {
+        wrap = j;
+        break;
+      }
+    }
+    if (wrap < 0) {
+      for (int k = size - 1; k > apex; --k) {
+        if (turn(f[static_cast<std::size_t>(k - 1)], f[static_cast<std::size_t>(k)], pw) < 0) {
+          wrap = k;
+          break;
+        }
+      }
+    }
+    if (wrap < 0) wrap = apex;
+    const int predecessor = f[static_cast<std::size_t>(wrap)];
+    if (predecessor == kInfinity) {
+      const Vec2 d = pw - s;
+      distance[static_cast<std::size_t>(w)] = d.x * normal.x + d.y * normal.y;
+    } else {
+      const Vec2 d = pw - point(predecessor);
+      distance[static_cast<std::size_t>(w)] =
+          distance[static_cast<std::size_t>(predecessor)] + std::hypot(d.x, d.y);
+    }
+    const int right_triangle = neighbour(task.triangle, w, task.b);
+    const int left_triangle = neighbour(task.triangle, task.a, w);
+    if (right_triangle >= 0) {
+      std::vector<int> child;
+      child.reserve(static_cast<std::size_t>(size - wrap + 1));
+      child.push_back(w);
+      child.insert(child.end(), f.begin() + wrap, f.end());
+      stack.push_back(
+          {right_triangle, w, task.b, std::move(child), std::max(wrap, apex) - wrap + 1});
+    }
+    if (left_triangle >= 0) {
+      std::vector<int> child(f.begin(), f.begin() + wrap + 1);
+      child.push_back(w);
+      stack.push_back({left_triangle, task.a, w, std::move(child), std::min(wrap, apex)});
+    }
+  }
+  return distance;
+}
+
+}  // namespace hullcook::detail

@@ -1,0 +1,101 @@
+#include "hullcook/core/predicates.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace hullcook {
+namespace {
+
+// Knuth's two-sum: s + e == a + b exactly.
+inline void two_sum(double a, double b, double& s, double& e) {
+  s = a + b;
+  double b_virtual = s - a;
+  double a_virtual = s - b_virtual;
+  e = (a - a_virtual) + (b - b_virtual);
+}
+
+// p + e == a * b exactly (fused multiply-add recovers the rounding error).
+inline void two_product(double a, double b, double& p, double& e) {
+  p = a * b;
+  e = std::fma(a, b, -p);
+}
+
+// The determinant expanded into six exact products, summed as a non-overlapping expansion
+// (Shewchuk's grow-expansion); its largest non-zero component carries the exact sign.
+double orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
+  const std::array<std::array<double, 2>, 6> factors{
+      {{a.x, b.y}, {-a.x, c.y}, {-c.x, b.y}, {-a.y, b.x}, {a.y, c.x}, {c.y, b.x}}};
+  std::array<double, 13> expansion{};
+  int length = 0;
+  auto grow = [&](double value) {
+    double carry = value;
+    for (int i = 0; i < length; ++i) {
+      double sum, error;
+      two_sum(carry, expansion[i], sum, error);
+      expansion[i] = error;
+      carry = sum;
+    }
+    expansion[length++] = carry;
+  };
+  for (const auto& factor : factors) {
+    double product, error;
+    two_product(factor[0], factor[1], product, error);
+    grow(error);
+    grow(product);
+  }
+  for (int i = length - 1; i >= 0; --i) {
+    if (expansion[i] != 0.0) return expansion[i];
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+double orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double left = (a.x - c.x) * (b.y - c.y);
+  const double right = (a.y - c.y) * (b.x - c.x);
+  const double determinant = left - right;
+  // Shewchuk's bound for the floating-point evaluation above (ccwerrboundA).
+  constexpr double epsilon = std::numeric_limits<double>::epsilon() / 2;
+  constexpr double error_bound = (3.0 + 16.0 * epsilon) * epsilon;
+  const double magnitude = std::abs(left) + std::abs(right);
+  if (std::abs(determinant) > error_bound * magnitude) return determinant;
+  return orient2d_exact(a, b, c);
+}
+
+int orientation(Vec2 a, Vec2 b, Vec2 c) {
+  const double value = orient2d(a, b, c);
+  return (value > 0.0) - (value < 0.0);
+}
+
+bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
+  if (orientation(a, b, p) != 0) return false;
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
+bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int o1 = orientation(a, b, c);
+  const int o2 = orientation(a, b, d);
+  const int o3 = orientation(c, d, a);
+  const int o4 = orientation(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  auto within_box = [](Vec2 p, Vec2 q, Vec2 r) {
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  if (o1 == 0 && within_box(a, b, c)) return true;
+  if (o2 == 0 && within_box(a, b, d)) return true;
+  if (o3 == 0 && within_box(c, d, a)) return true;
+  if (o4 == 0 && within_box(c, d, b)) return true;
+  return false;
+}
+
+bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return orientation(a, b, c) * orientation(a, b, d) < 0 &&
+         orientation(c, d, a) * orientation(c, d, b) < 0;
+}
+
+}  // namespace hullcook
