@@ -129,6 +129,9 @@ Status validate_assets(const unsigned char* bytes, const BundleHeader& header) {
       return Status::out_of_bounds;
     if (strings[asset.name_offset + asset.name_length] != 0) return Status::malformed;
     if ((asset.flags & ~format::kAssetKnownFlags) != 0) return Status::malformed;
+    if ((asset.flags & format::kAssetMeasureMask) >> format::kAssetMeasureShift >=
+        format::kMeasureCount)
+      return Status::malformed;
     const bool has_physics = (asset.flags & format::kAssetHasPhysics) != 0;
     if (has_physics && !bundle_has_physics) return Status::malformed;
     if (!finite(asset.pixels_per_unit) || !(asset.pixels_per_unit > 0.0f)) return Status::malformed;
@@ -350,6 +353,16 @@ Level Asset::select_level(float tau) const noexcept {
     if (candidate.tau() >= tau) return candidate;
   }
   return level(level_count_ - 1);
+}
+
+bool Asset::flip_y() const noexcept {
+  return record_ && (load<AssetRecord>(record_).flags & format::kAssetFlipY) != 0;
+}
+
+const char* Asset::measure() const noexcept {
+  if (!record_) return "";
+  return format::kMeasureNames[(load<AssetRecord>(record_).flags & format::kAssetMeasureMask) >>
+                               format::kAssetMeasureShift];
 }
 
 bool Asset::has_physics() const noexcept {

@@ -113,6 +113,8 @@ void expect_round_trip(const std::vector<CookedAsset>& assets, const Bundle& bun
     EXPECT_FLOAT_EQ(asset.pivot().x, static_cast<float>(cooked.pivot.x));
     EXPECT_FLOAT_EQ(asset.pivot().y, static_cast<float>(cooked.pivot.y));
     EXPECT_EQ(asset.has_physics(), cooked.physics.has_value());
+    EXPECT_EQ(asset.flip_y(), cooked.transform.flip_y);
+    EXPECT_STREQ(asset.measure(), cooked.measure.c_str());
     if (cooked.physics) {
       EXPECT_EQ(asset.physics().density, cooked.physics->density);
       EXPECT_EQ(asset.physics().friction, cooked.physics->friction);

@@ -35,6 +35,8 @@ inline CookedAsset make_asset(std::string name, std::vector<CookedLevel> levels,
   asset.pixels_per_unit = pixels_per_unit;
   asset.levels = std::move(levels);
   asset.tau = asset.levels.empty() ? 0.0 : asset.levels[0].tau;
+  asset.transform.scale = 1.0 / pixels_per_unit;
+  asset.transform.flip_y = true;
   return asset;
 }
 
@@ -47,6 +49,8 @@ inline std::vector<CookedAsset> synthetic_assets() {
       {{2.0 / 32, {rectangle(-1, -0.75, 1, 0.75)}}, {8.0 / 32, {rectangle(-1, -0.75, 1, 0.75)}}},
       32.0, 64, 48);
   crate.pivot = {0.5, 1.0};
+  crate.measure = "sp";
+  crate.transform.flip_y = false;
   crate.physics = PhysicsProperties{2.5f, 0.6f, 0.1f, false, 0x0002, 0xFFFD};
   assets.push_back(crate);
 

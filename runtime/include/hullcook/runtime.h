@@ -156,6 +156,11 @@ class Asset {
   float pixels_per_unit() const noexcept;
   // Normalised image coordinates of the output origin: (0, 0) top left, (1, 1) bottom right.
   Vec2 pivot() const noexcept;
+  // Whether output y points up (the cooker negated image y, its default) rather than down.
+  bool flip_y() const noexcept;
+  // The concavity measure of the decomposition: "sl", "sp", "h1", "h2", or "" when unknown.
+  // A static string, never null.
+  const char* measure() const noexcept;
   // [output units] the worst distance between a cooked hull and the stored one (SPEC §9).
   float quantization_error() const noexcept;
 

@@ -31,7 +31,14 @@ inline constexpr std::uint16_t kBundleHasPhysics = 1u << 0;
 inline constexpr std::uint16_t kBundleKnownFlags = kBundleHasPhysics;
 // Asset flags (AssetRecord::flags).
 inline constexpr std::uint16_t kAssetHasPhysics = 1u << 0;
-inline constexpr std::uint16_t kAssetKnownFlags = kAssetHasPhysics;
+inline constexpr std::uint16_t kAssetFlipY = 1u << 1;  // output y up: image y was negated
+inline constexpr int kAssetMeasureShift = 2;           // bits 2-4: index into kMeasureNames
+inline constexpr std::uint16_t kAssetMeasureMask = 7u << kAssetMeasureShift;
+inline constexpr std::uint16_t kAssetKnownFlags =
+    kAssetHasPhysics | kAssetFlipY | kAssetMeasureMask;
+// The concavity measures by their code in the asset flags; "" when unknown.
+inline constexpr const char* kMeasureNames[] = {"", "sl", "sp", "h1", "h2"};
+inline constexpr std::uint16_t kMeasureCount = 5;
 // Physics flags (PhysicsRecord::flags).
 inline constexpr std::uint32_t kPhysicsSensor = 1u << 0;
 inline constexpr std::uint32_t kPhysicsKnownFlags = kPhysicsSensor;

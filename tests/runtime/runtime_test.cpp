@@ -1,0 +1,139 @@
+// The runtime's game-facing API on bundles written by write_bundle().
+#include "synthetic_assets.h"
+
+#include "hullcook/cook/bundle_writer.h"
+#include "hullcook/runtime.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace hullcook {
+namespace {
+
+using runtime::Bundle;
+using runtime::Status;
+
+double cross(runtime::Vec2 o, runtime::Vec2 a, runtime::Vec2 b) {
+  return (double{a.x} - o.x) * (double{b.y} - o.y) - (double{a.y} - o.y) * (double{b.x} - o.x);
+}
+
+TEST(Runtime, FindsEveryAssetOfALargeBundleAndNothingElse) {
+  std::vector<CookedAsset> assets;
+  for (int i = 0; i < 3000; ++i)
+    assets.push_back(test::make_asset("sprites/enemy_" + std::to_string(i) + ".png",
+                                      {{1.0, {test::rectangle(0, 0, 1 + i % 7, 2)}}}));
+  const std::string bytes = write_bundle(assets);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  ASSERT_EQ(bundle.asset_count(), assets.size());
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    const runtime::Asset asset = bundle.find(assets[i].name);
+    ASSERT_TRUE(asset) << assets[i].name;
+    EXPECT_EQ(asset.index(), i);
+    EXPECT_EQ(asset.name().data()[asset.name().size()], '\0');
+    EXPECT_FALSE(bundle.find(assets[i].name + "x"));
+  }
+  EXPECT_FALSE(bundle.find("sprites/enemy_3000.png"));
+}
+
+TEST(Runtime, SelectsTheFinestLevelWhoseTauIsAtLeastTheRequestedOne) {
+  const std::string bytes = write_bundle(test::synthetic_assets());
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  const runtime::Asset hill = bundle.find("terrain/hill.png");  // τ = 2, 8, 24
+  ASSERT_EQ(hill.level_count(), 3u);
+  const struct {
+    float requested, expected_tau;
+  } cases[] = {{0.0f, 2.0f},  {2.0f, 2.0f},   {2.1f, 8.0f},     {8.0f, 8.0f},
+               {9.0f, 24.0f}, {24.0f, 24.0f}, {1000.0f, 24.0f}, {-1.0f, 2.0f}};
+  for (const auto& c : cases) EXPECT_EQ(hill.select_level(c.requested).tau(), c.expected_tau);
+  EXPECT_EQ(hill.select_level(2.0f).hull_count(), 6u);
+  EXPECT_EQ(hill.select_level(1000.0f).hull_count(), 1u);
+  // Coarser levels hold fewer hulls and vertices.
+  EXPECT_GT(hill.level(0).vertex_count(), hill.level(2).vertex_count());
+  EXPECT_EQ(hill.level(3).hull_count(), 0u);
+  EXPECT_EQ(hill.level(0).hull(99).vertex_count(), 0u);
+}
+
+TEST(Runtime, PlacementScalesAndMirrorsKeepingHullsCounterClockwise) {
+  const std::string bytes = write_bundle(test::synthetic_assets());
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  const runtime::Hull hull = bundle.find("terrain/hill.png").level(2).hull(0);
+  ASSERT_EQ(hull.vertex_count(), 5u);
+  runtime::Vec2 plain[8], mirrored[8];
+  ASSERT_EQ(hull.copy_vertices(plain, 8), 5u);
+  ASSERT_EQ(hull.copy_vertices(mirrored, 8, {0.5f, true}), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_FLOAT_EQ(mirrored[i].x, -0.5f * plain[4 - i].x);
+    EXPECT_FLOAT_EQ(mirrored[i].y, 0.5f * plain[4 - i].y);
+    EXPECT_GT(cross(mirrored[i], mirrored[(i + 1) % 5], mirrored[(i + 2) % 5]), 0.0);
+  }
+  // A short buffer gets what fits and learns the count.
+  runtime::Vec2 two[2];
+  EXPECT_EQ(hull.copy_vertices(two, 2), 5u);
+  EXPECT_FLOAT_EQ(two[1].x, plain[1].x);
+  EXPECT_EQ(hull.copy_vertices(nullptr, 0), 5u);
+}
+
+TEST(Runtime, AreaAndCentroidOfAHull) {
+  const std::string bytes =
+      write_bundle({test::make_asset("r", {{0.0, {test::rectangle(1, 2, 4, 10)}}})});
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  const runtime::Hull hull = bundle.find("r").level(0).hull(0);
+  const double error = bundle.find("r").quantization_error();
+  EXPECT_NEAR(hull.area(), 24.0, 2 * 22 * error);
+  EXPECT_NEAR(hull.centroid().x, 2.5, 2 * error);
+  EXPECT_NEAR(hull.centroid().y, 6.0, 2 * error);
+}
+
+TEST(Runtime, EmptyViewsAreHarmless) {
+  Bundle bundle;
+  EXPECT_TRUE(bundle.empty());
+  EXPECT_EQ(bundle.asset_count(), 0u);
+  EXPECT_FALSE(bundle.find("x"));
+  const runtime::Asset asset;
+  EXPECT_EQ(asset.level_count(), 0u);
+  EXPECT_TRUE(asset.name().empty());
+  EXPECT_EQ(asset.select_level(1.0f).hull_count(), 0u);
+  EXPECT_FALSE(asset.has_physics());
+  EXPECT_EQ(asset.physics().density, runtime::Physics{}.density);
+  EXPECT_STREQ(asset.measure(), "");
+  EXPECT_EQ(runtime::Level{}.hull(0).vertex_count(), 0u);
+  EXPECT_GT(std::string(hullcook::runtime_version()).size(), 0u);
+}
+
+TEST(MappedFile, MapsAFileForBundleOpen) {
+  const std::filesystem::path dir =
+      std::filesystem::path(HULLCOOK_BINARY_DIR) / "tests/runtime/mapped_file_test";
+  std::filesystem::create_directories(dir);
+  const std::string bytes = write_bundle(test::synthetic_assets());
+  std::ofstream(dir / "a.hcb", std::ios::binary) << bytes;
+  std::ofstream(dir / "empty.hcb", std::ios::binary).flush();
+
+  runtime::MappedFile file;
+  ASSERT_EQ(file.open((dir / "a.hcb").c_str()), Status::ok);
+  EXPECT_EQ(file.size(), bytes.size());
+  runtime::MappedFile moved = std::move(file);
+  EXPECT_EQ(file.data(), nullptr);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(moved.data(), moved.size()), Status::ok);
+  EXPECT_TRUE(bundle.find("box"));
+
+  runtime::MappedFile other;
+  EXPECT_EQ(other.open((dir / "missing.hcb").c_str()), Status::io_error);
+  EXPECT_EQ(other.open(dir.c_str()), Status::io_error);
+  EXPECT_EQ(other.open(nullptr), Status::invalid_argument);
+  ASSERT_EQ(other.open((dir / "empty.hcb").c_str()), Status::ok);
+  EXPECT_EQ(other.size(), 0u);
+  EXPECT_EQ(bundle.open(other.data(), other.size()), Status::truncated);
+}
+
+}  // namespace
+}  // namespace hullcook
