@@ -104,11 +104,24 @@ Header read_header(const std::string& bytes, const std::string& name) {
     if (info_size == 12) return {Format::bmp, read_u16_le(bytes, 18), read_u16_le(bytes, 20)};
     if (info_size < 40)
       fail(name, "corrupt BMP (unknown header size " + std::to_string(info_size) + ")");
-    auto width = static_cast<std::int32_t>(read_u32_le(bytes, 18));
-    auto height = static_cast<std::int32_t>(read_u32_le(bytes, 22));
-    auto magnitude = [](std::int32_t v) { return v < 0 ? -static_cast<std::int64_t>(v) : v; };
-    return {Format::bmp, static_cast<std::uint64_t>(magnitude(width)),
-            static_cast<std::uint64_t>(magnitude(height))};
+    // OpenCV prints to stderr on a short BMP, so the sizes are checked here.
+    if (bytes.size() < 14 + std::uint64_t{info_size}) {
+      fail(name, "truncated BMP (the file ends inside the header)");
+    }
+    auto magnitude = [](std::uint32_t v) {
+      auto value = static_cast<std::int64_t>(static_cast<std::int32_t>(v));
+      return static_cast<std::uint64_t>(value < 0 ? -value : value);
+    };
+    const std::uint64_t width = magnitude(read_u32_le(bytes, 18));
+    const std::uint64_t height = magnitude(read_u32_le(bytes, 22));
+    const std::uint32_t bits = read_u16_le(bytes, 28), compression = read_u32_le(bytes, 30);
+    const std::uint64_t stride = (width * bits + 31) / 32 * 4;
+    const bool plausible = width <= 0xFFFFFF && height <= 0xFFFFFF && bits <= 64;  // no overflow
+    if ((compression == 0 || compression == 3) && plausible &&
+        read_u32_le(bytes, 10) + stride * height > bytes.size()) {
+      fail(name, "truncated BMP (the pixel data ends before the last row)");
+    }
+    return {Format::bmp, width, height};
   }
   if (bytes.size() >= 12 && bytes.compare(0, 4, "RIFF") == 0 && bytes.compare(8, 4, "WEBP") == 0) {
     if (bytes.size() < 30) fail(name, "truncated WebP (the file ends inside the header)");

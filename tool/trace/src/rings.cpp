@@ -2,6 +2,7 @@
 // check: any simplified edge that crosses or touches another is refined until none does).
 #include "rings.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>

@@ -1,0 +1,154 @@
+// Tracing small hand-made alpha fields: geometry of the crossing points, the connectivity rule,
+// specks and pin holes, islands in holes.
+#include "hullcook/core/error.h"
+#include "hullcook/trace/trace.h"
+#include "trace_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+
+namespace hullcook {
+namespace {
+
+// Rows of characters: '#' = 255, '.' = 0, a digit d = d * 28.
+AlphaImage image_of(std::initializer_list<const char*> rows) {
+  AlphaImage image;
+  for (const char* row : rows) {
+    std::string text(row);
+    image.width = static_cast<int>(text.size());
+    ++image.height;
+    for (char c : text) {
+      image.alpha.push_back(c == '#'   ? 255
+                            : c == '.' ? 0
+                                       : static_cast<std::uint8_t>((c - '0') * 28));
+    }
+  }
+  return image;
+}
+
+TraceSettings exact() {
+  TraceSettings settings;
+  settings.simplify = 0;
+  settings.min_blob_area = 0;
+  settings.min_hole_area = 0;
+  return settings;
+}
+
+std::size_t hole_count(const TraceResult& result) {
+  std::size_t holes = 0;
+  for (const Region& region : result.regions) holes += region.holes.size();
+  return holes;
+}
+
+TEST(TraceAlpha, HardEdgesLieOnPixelBordersWithCutCorners) {
+  TraceResult result =
+      trace_alpha(image_of({".....", ".###.", ".###.", ".###.", "....."}), exact());
+  ASSERT_EQ(result.regions.size(), 1u);
+  const Ring& outer = result.regions[0].outer;
+  // The 3×3 square [1,4]², less a right triangle of legs 0.5 at each corner.
+  EXPECT_DOUBLE_EQ(test::ring_area(outer), 9.0 - 4 * 0.125);
+  EXPECT_EQ(outer.size(), 8u);  // collinear crossing points are merged
+  for (Vec2 p : outer) {
+    EXPECT_GE(p.x, 1.0);
+    EXPECT_LE(p.x, 4.0);
+    EXPECT_GE(p.y, 1.0);
+    EXPECT_LE(p.y, 4.0);
+  }
+  EXPECT_EQ(result.traced_vertices, 12u);  // one crossing per edge between the 3×3 and outside
+}
+
+TEST(TraceAlpha, AntiAliasedEdgeIsPlacedBetweenPixelCentres) {
+  // Alpha 255, 255, 252 (9 * 28), 56, 0 along each row: the 127.5 crossing lies between the
+  // centres 2.5 and 3.5 at t = (252 - 127.5) / (252 - 56).
+  AlphaImage image = image_of({"##92.", "##92.", "##92.", "##92."});
+  TraceResult result = trace_alpha(image, exact());
+  ASSERT_EQ(result.regions.size(), 1u);
+  double right = 0;
+  for (Vec2 p : result.regions[0].outer) right = std::max(right, p.x);
+  EXPECT_NEAR(right, 2.5 + (252 - 127.5) / (252.0 - 56.0), 1e-12);
+
+  TraceSettings low = exact();
+  low.alpha = 50;  // now 56 is opaque: the crossing is between 56 and 0 at level 49.5
+  result = trace_alpha(image, low);
+  right = 0;
+  for (Vec2 p : result.regions[0].outer) right = std::max(right, p.x);
+  EXPECT_NEAR(right, 3.5 + (56 - 49.5) / 56.0, 1e-12);
+}
+
+TEST(TraceAlpha, OpaqueIsEightConnectedTransparentFourConnected) {
+  // Two opaque pixels touching at a corner are one blob.
+  TraceResult diagonal = trace_alpha(image_of({"#.", ".#"}), exact());
+  EXPECT_EQ(diagonal.regions.size(), 1u);
+  EXPECT_EQ(hole_count(diagonal), 0u);
+  // Two transparent pixels touching at a corner inside a solid are two holes.
+  TraceResult holes =
+      trace_alpha(image_of({"######", "######", "##.###", "###.##", "######", "######"}), exact());
+  ASSERT_EQ(holes.regions.size(), 1u);
+  EXPECT_EQ(holes.regions[0].holes.size(), 2u);
+  // A ring of pixels connected only diagonally still encloses its hole.
+  TraceResult diamond =
+      trace_alpha(image_of({"..#..", ".#.#.", "#...#", ".#.#.", "..#.."}), exact());
+  ASSERT_EQ(diamond.regions.size(), 1u);
+  EXPECT_EQ(diamond.regions[0].holes.size(), 1u);
+}
+
+TEST(TraceAlpha, SpecksAreDroppedAndPinHolesFilled) {
+  AlphaImage image =
+      image_of({"#......", "...#...", "..###..", ".##.##.", "..###..", "...#...", "......."});
+  TraceResult all = trace_alpha(image, exact());
+  EXPECT_EQ(all.regions.size(), 2u);
+  EXPECT_EQ(hole_count(all), 1u);
+  TraceSettings defaults;  // 4 px²: the 1-pixel speck (0.5 px²) and the 1-pixel hole go
+  TraceResult cleaned = trace_alpha(image, defaults);
+  ASSERT_EQ(cleaned.regions.size(), 1u);
+  EXPECT_EQ(hole_count(cleaned), 0u);
+  EXPECT_GT(test::ring_area(cleaned.regions[0].outer), 4.0);
+}
+
+TEST(TraceAlpha, IslandInAHoleIsItsOwnRegion) {
+  AlphaImage image = image_of({"###########", "###########", "##.......##", "##.......##",
+                               "##..###..##", "##..###..##", "##..###..##", "##.......##",
+                               "##.......##", "###########", "###########"});
+  TraceResult result = trace_alpha(image, exact());
+  ASSERT_EQ(result.regions.size(), 2u);
+  const Region& frame = result.regions[0];  // sorted by first vertex: the frame starts higher
+  ASSERT_EQ(frame.holes.size(), 1u);
+  EXPECT_TRUE(result.regions[1].holes.empty());
+  EXPECT_TRUE(test::point_in_ring(result.regions[1].outer[0], frame.holes[0]));
+  // Filling the hole swallows the island with it.
+  TraceSettings fill = exact();
+  fill.min_hole_area = 100;
+  TraceResult filled = trace_alpha(image, fill);
+  ASSERT_EQ(filled.regions.size(), 1u);
+  EXPECT_TRUE(filled.regions[0].holes.empty());
+}
+
+TEST(TraceAlpha, ThresholdZeroTakesTheWholeImage) {
+  TraceSettings everything = exact();
+  everything.alpha = 0;
+  TraceResult result = trace_alpha(image_of({"...", ".#.", "..."}), everything);
+  ASSERT_EQ(result.regions.size(), 1u);
+  EXPECT_TRUE(result.regions[0].holes.empty());
+  EXPECT_GT(test::ring_area(result.regions[0].outer), 8.0);
+}
+
+TEST(TraceAlpha, SimplificationNeverCollapsesTinyRings) {
+  TraceSettings coarse = exact();
+  coarse.simplify = 5;
+  TraceResult result = trace_alpha(image_of({"....", ".##.", ".##.", "...."}), coarse);
+  ASSERT_EQ(result.regions.size(), 1u);
+  EXPECT_GE(result.regions[0].outer.size(), 3u);
+  EXPECT_GT(test::ring_area(result.regions[0].outer), 0.0);
+}
+
+TEST(TraceAlpha, EmptyAndInconsistentImages) {
+  TraceResult empty = trace_alpha(image_of({"...", "..."}), TraceSettings{});
+  EXPECT_TRUE(empty.regions.empty());
+  EXPECT_EQ(empty.warnings.size(), 1u);
+  AlphaImage wrong{3, 3, std::vector<std::uint8_t>(8, 255)};
+  EXPECT_THROW(trace_alpha(wrong, TraceSettings{}), InputError);
+}
+
+}  // namespace
+}  // namespace hullcook
