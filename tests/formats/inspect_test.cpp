@@ -1,0 +1,117 @@
+// `hullcook inspect` on bundles: the text summary, the debug JSON (hulls within the quantization
+// bound of the cooked ones), and exit code 2 with the status in words for bad files.
+#include "synthetic_assets.h"
+
+#include "../cli/run_command.h"
+#include "hullcook/cook/bundle_writer.h"
+#include "hullcook/format/bundle_layout.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace hullcook {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path work_dir() {
+  const fs::path dir = fs::path(HULLCOOK_BINARY_DIR) / "tests/formats/inspect_test";
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write(const std::string& name, const std::string& bytes) {
+  const fs::path path = work_dir() / name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+TEST(Inspect, PrintsASummaryOfABundle) {
+  const fs::path path = write("synthetic.hcb", write_bundle(test::synthetic_assets()));
+  const auto result = test::run_hullcook("inspect " + path.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("hullcook bundle 1.0"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("6 assets"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("bytes per vertex"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("asset \"terrain/hill.png\""), std::string::npos);
+  EXPECT_NE(result.output.find("level 2: tau 24, 1 hulls, 5 vertices"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("physics: density 2.5, friction 0.6"), std::string::npos)
+      << result.output;
+}
+
+TEST(Inspect, JsonGivesTheCookedHullsBackWithinTheQuantizationBound) {
+  const std::vector<CookedAsset> assets = test::synthetic_assets();
+  const fs::path path = write("synthetic_json.hcb", write_bundle(assets));
+  const auto result = test::run_hullcook("inspect --json " + path.string() + " 2>/dev/null");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const nlohmann::json root = nlohmann::json::parse(result.output);
+  EXPECT_EQ(root["hullcook"], 1);
+  ASSERT_EQ(root["assets"].size(), assets.size());
+  for (std::size_t a = 0; a < assets.size(); ++a) {
+    const CookedAsset& cooked = assets[a];
+    const nlohmann::json& asset = root["assets"][a];
+    EXPECT_EQ(asset["name"], cooked.name);
+    EXPECT_EQ(asset["transform"]["flip_y"], cooked.transform.flip_y);
+    EXPECT_NEAR(asset["transform"]["scale"].get<double>(), 1.0 / cooked.pixels_per_unit, 1e-9);
+    if (cooked.levels.empty()) continue;
+    ASSERT_EQ(asset["levels"].size(), cooked.levels.size());
+    ASSERT_EQ(asset["pieces"].size(), cooked.levels[0].hulls.size());
+    const double bound =
+        format::quantization_error_bound(cooked.levels[0].tau, cooked.pixels_per_unit);
+    for (std::size_t l = 0; l < cooked.levels.size(); ++l) {
+      const nlohmann::json& hulls = asset["levels"][l]["hulls"];
+      ASSERT_EQ(hulls.size(), cooked.levels[l].hulls.size());
+      for (std::size_t h = 0; h < hulls.size(); ++h) {
+        // Every stored vertex lies within the bound of the cooked hull's boundary or inside it;
+        // here simply within bound of some cooked vertex or edge.
+        for (const auto& point : hulls[h]) {
+          const Vec2 p{point[0].get<double>(), point[1].get<double>()};
+          const Ring& ring = cooked.levels[l].hulls[h];
+          double best = 1e300;
+          for (std::size_t i = 0; i < ring.size(); ++i) {
+            const Vec2 a0 = ring[i], b0 = ring[(i + 1) % ring.size()], ab = b0 - a0;
+            const double t = std::clamp(
+                ((p.x - a0.x) * ab.x + (p.y - a0.y) * ab.y) / (ab.x * ab.x + ab.y * ab.y), 0.0,
+                1.0);
+            best = std::min(best, std::hypot(p.x - a0.x - t * ab.x, p.y - a0.y - t * ab.y));
+          }
+          EXPECT_LE(best, bound * (1 + 1e-5) + 1e-6) << cooked.name;
+        }
+      }
+      if (l == 0 && !hulls.empty()) {
+        EXPECT_EQ(asset["pieces"][0]["hull"], hulls[0]) << cooked.name;
+      }
+    }
+  }
+}
+
+TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
+  std::string bytes = write_bundle(test::synthetic_assets());
+  std::string corrupt = bytes;
+  corrupt[200] ^= 0x40;
+  const fs::path checksum = write("corrupt.hcb", corrupt);
+  const fs::path truncated = write("truncated.hcb", bytes.substr(0, 100));
+  const fs::path text =
+      write("text.hcb", "hello, this is not a bundle at all, but long enough for a header!");
+  const struct {
+    fs::path path;
+    std::string words;
+  } cases[] = {{checksum, "bad checksum"},
+               {truncated, "truncated"},
+               {text, "not a hullcook bundle"},
+               {work_dir() / "missing.hcb", "could not be opened"}};
+  for (const auto& c : cases) {
+    const auto result = test::run_hullcook("inspect " + c.path.string());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(c.words), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(c.path.filename().string()), std::string::npos) << result.output;
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
