@@ -1,0 +1,40 @@
+// hullcook::chipmunk: cooked hulls as Chipmunk 7 polygon shapes. Links hullcook::runtime and
+// Chipmunk::Chipmunk. No exceptions; Chipmunk allocates the shapes.
+#pragma once
+
+#include "hullcook/runtime.h"
+
+#include <chipmunk/chipmunk.h>
+
+#include <cstddef>
+
+namespace hullcook::chipmunk {
+
+// What add_shapes() did.
+struct ShapeReport {
+  std::size_t created = 0;  // cpPolyShapes attached to the body, one per hull
+  std::size_t altered = 0;  // hulls whose vertex count Chipmunk's own hull changed (expect 0)
+  double area = 0.0;        // [game units²] total area of the placed hulls
+};
+
+// Options for add_shapes().
+struct ShapeOptions {
+  runtime::Placement placement{};
+  cpFloat radius = 0.0;           // [game units] Chipmunk's rounding radius of each polygon
+  cpFloat density = 1.0;          // [kg / game unit²] used unless the asset's physics apply
+  bool use_asset_physics = true;  // take density, friction, restitution, sensor, filter from
+                                  // the asset when it has physics properties
+  cpFloat friction = 0.7;         // used unless the asset's physics apply
+  cpFloat elasticity = 0.0;       // used unless the asset's physics apply
+};
+
+// Creates one cpPolyShape per hull of level on body and adds it to space (when space is not
+// null; otherwise the caller adds the shapes, which it can reach with cpBodyEachShape). Each
+// shape gets a density, so that Chipmunk accumulates the body's mass, centre of gravity and
+// moment of inertia from the hulls themselves (set cpBodySetMass/Moment afterwards to
+// override). The asset's density is in kg per output unit²; it is converted to game units with
+// the placement scale. Must not be called while the space is locked (during cpSpaceStep).
+ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
+                       const runtime::Level& level, const ShapeOptions& options = {});
+
+}  // namespace hullcook::chipmunk

@@ -1,0 +1,48 @@
+#include "hullcook/chipmunk.h"
+
+namespace hullcook::chipmunk {
+
+ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
+                       const runtime::Level& level, const ShapeOptions& options) {
+  ShapeReport report;
+  if (body == nullptr) return report;
+  const float scale = options.placement.scale;
+  cpFloat density = options.density, friction = options.friction;
+  cpFloat elasticity = options.elasticity;
+  bool sensor = false;
+  cpShapeFilter filter = CP_SHAPE_FILTER_ALL;
+  if (options.use_asset_physics && asset.has_physics()) {
+    const runtime::Physics physics = asset.physics();
+    // kg per output unit² -> kg per game unit².
+    density = physics.density / (cpFloat{scale} * scale);
+    friction = physics.friction;
+    elasticity = physics.restitution;
+    sensor = physics.sensor;
+    filter = cpShapeFilterNew(CP_NO_GROUP, physics.category_bits, physics.mask_bits);
+  }
+  for (std::size_t h = 0; h < level.hull_count(); ++h) {
+    const runtime::Hull hull = level.hull(h);
+    runtime::Vec2 points[runtime::kMaxStackVertices];
+    const std::size_t count =
+        hull.copy_vertices(points, runtime::kMaxStackVertices, options.placement);
+    const std::size_t used =
+        count < runtime::kMaxStackVertices ? count : runtime::kMaxStackVertices;
+    cpVect vertices[runtime::kMaxStackVertices];
+    for (std::size_t i = 0; i < used; ++i) vertices[i] = cpv(points[i].x, points[i].y);
+    cpShape* shape =
+        cpPolyShapeNew(body, static_cast<int>(used), vertices, cpTransformIdentity, options.radius);
+    if (static_cast<std::size_t>(cpPolyShapeGetCount(shape)) != count) ++report.altered;
+    cpShapeSetFriction(shape, friction);
+    cpShapeSetElasticity(shape, elasticity);
+    cpShapeSetSensor(shape, sensor ? cpTrue : cpFalse);
+    cpShapeSetFilter(shape, filter);
+    // After the filter: setting the density makes the body accumulate its mass from the shape.
+    cpShapeSetDensity(shape, density);
+    if (space != nullptr) cpSpaceAddShape(space, shape);
+    report.area += cpShapeGetArea(shape);
+    ++report.created;
+  }
+  return report;
+}
+
+}  // namespace hullcook::chipmunk

@@ -1,0 +1,170 @@
+// Cooked hulls in a real Chipmunk 7 space, through hullcook::chipmunk.
+#include "physics_scene.h"
+
+#include "hullcook/chipmunk.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace hullcook {
+namespace {
+
+using runtime::Bundle;
+using runtime::Status;
+
+// Chipmunk lets shapes overlap by its collision slop; we set it to Box2D's 5 mm.
+constexpr double kCollisionSlop = 0.005;
+
+struct Scene {
+  std::string bytes = test::scene_bundle();
+  Bundle bundle;
+  cpSpace* space = cpSpaceNew();
+  Scene() {
+    EXPECT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+    cpSpaceSetGravity(space, cpv(0, -10));
+    cpSpaceSetCollisionSlop(space, kCollisionSlop);
+    cpSpaceSetIterations(space, 20);
+    cpSpaceSetSleepTimeThreshold(space, 0.5);
+  }
+  ~Scene() {
+    cpSpaceEachShape(
+        space,
+        [](cpShape* shape, void* s) {
+          cpSpaceAddPostStepCallback(
+              static_cast<cpSpace*>(s),
+              [](cpSpace* sp, void* sh, void*) {
+                cpSpaceRemoveShape(sp, static_cast<cpShape*>(sh));
+                cpShapeFree(static_cast<cpShape*>(sh));
+              },
+              shape, nullptr);
+        },
+        space);
+    cpSpaceEachBody(
+        space,
+        [](cpBody* body, void* s) {
+          cpSpaceAddPostStepCallback(
+              static_cast<cpSpace*>(s),
+              [](cpSpace* sp, void* b, void*) {
+                cpSpaceRemoveBody(sp, static_cast<cpBody*>(b));
+                cpBodyFree(static_cast<cpBody*>(b));
+              },
+              body, nullptr);
+        },
+        space);
+    cpSpaceStep(space, 0.0);  // runs the post-step removals
+    cpSpaceFree(space);
+  }
+
+  cpBody* body(const char* name, cpVect position, bool is_static,
+               chipmunk::ShapeReport* out = nullptr) {
+    cpBody* created =
+        is_static ? cpSpaceGetStaticBody(space) : cpSpaceAddBody(space, cpBodyNew(0, 0));
+    const runtime::Asset asset = bundle.find(name);
+    EXPECT_TRUE(asset) << name;
+    if (!is_static) cpBodySetPosition(created, position);
+    const chipmunk::ShapeReport report =
+        chipmunk::add_shapes(space, created, asset, asset.level(0));
+    EXPECT_EQ(report.altered, 0u) << name;
+    EXPECT_EQ(report.created, asset.level(0).hull_count()) << name;
+    if (out) *out = report;
+    return created;
+  }
+  void settle(double seconds) {
+    for (int step = 0; step < static_cast<int>(seconds * 60); ++step) cpSpaceStep(space, 1.0 / 60);
+  }
+};
+
+TEST(Chipmunk, BodiesComeToRestOnTheTerrainAtThePredictedHeight) {
+  Scene scene;
+  scene.body("terrain/ground.png", cpvzero, true);
+  cpBody* house = scene.body("props/house.png", cpv(-3, 2), false);
+  cpBody* ell = scene.body("props/ell.png", cpv(3, 3), false);
+  scene.settle(6.0);
+  for (cpBody* body : {house, ell}) {
+    EXPECT_LT(cpvlength(cpBodyGetVelocity(body)), 0.02);
+    EXPECT_NEAR(cpBodyGetAngle(body), 0.0, 0.01);
+    EXPECT_NEAR(cpBodyGetPosition(body).y, 0.5, test::kTau + kCollisionSlop);
+  }
+  EXPECT_NEAR(cpBodyGetPosition(house).x, -3.0, 0.05);
+  EXPECT_NEAR(cpBodyGetPosition(ell).x, 3.0, 0.05);
+}
+
+TEST(Chipmunk, SegmentQueriesHitWhereTheSilhouetteIs) {
+  Scene scene;
+  scene.body("terrain/ground.png", cpvzero, true);
+  cpBody* house = scene.body("props/house.png", cpv(2, 0.5), false);
+  cpBodySetType(house, CP_BODY_TYPE_KINEMATIC);
+  cpSpaceReindexShapesForBody(scene.space, house);
+  const double error = scene.bundle.find("props/house.png").quantization_error();
+  for (double x = -0.45; x <= 0.45; x += 0.05) {
+    cpSegmentQueryInfo info{};
+    ASSERT_TRUE(cpSpaceSegmentQueryFirst(scene.space, cpv(2 + x, 10), cpv(2 + x, -10), 0,
+                                         CP_SHAPE_FILTER_ALL, &info));
+    EXPECT_NEAR(info.point.y, 0.5 + test::house_top(x), 2 * error + 1e-6) << "x " << x;
+  }
+  cpSegmentQueryInfo info{};
+  ASSERT_TRUE(cpSpaceSegmentQueryFirst(scene.space, cpv(5, 10), cpv(5, -10), 0, CP_SHAPE_FILTER_ALL,
+                                       &info));
+  EXPECT_NEAR(info.point.y, 0.0, 1e-4);
+}
+
+TEST(Chipmunk, MassMomentAndCentroidFromTheHullsMatchTheSilhouette) {
+  Scene scene;
+  for (const auto& [name, silhouette, density] :
+       {std::tuple{"props/house.png", test::house_silhouette(), 2.0},
+        std::tuple{"props/ell.png", test::ell_silhouette(), 1.0}}) {
+    chipmunk::ShapeReport report;
+    cpBody* body = scene.body(name, cpvzero, false, &report);
+    const double error = scene.bundle.find(name).quantization_error();
+    const double area = test::ring_area(silhouette);
+    EXPECT_NEAR(report.area, area, test::ring_perimeter(silhouette) * error * 2) << name;
+    EXPECT_NEAR(cpBodyGetMass(body), density * area,
+                density * test::ring_perimeter(silhouette) * error * 2)
+        << name;
+    const Vec2 centroid = test::ring_centroid(silhouette);
+    EXPECT_NEAR(cpBodyGetCenterOfGravity(body).x, centroid.x, 4 * error) << name;
+    EXPECT_NEAR(cpBodyGetCenterOfGravity(body).y, centroid.y, 4 * error) << name;
+    // The moment about the centroid of the whole silhouette (a polygon's, by cpMomentForPoly).
+    std::vector<cpVect> vertices;
+    for (const Vec2& p : silhouette) vertices.push_back(cpv(p.x - centroid.x, p.y - centroid.y));
+    // cpMomentForPoly needs a convex polygon: sum the hulls of the exact decomposition instead.
+    const auto hulls =
+        std::string(name) == "props/house.png" ? test::house_hulls() : test::ell_hulls();
+    double moment = 0;
+    for (const Ring& hull : hulls) {
+      std::vector<cpVect> v;
+      for (const Vec2& p : hull) v.push_back(cpv(p.x, p.y));
+      const double mass = density * test::ring_area(hull);
+      moment += cpMomentForPoly(mass, static_cast<int>(v.size()), v.data(),
+                                cpv(-centroid.x, -centroid.y), 0);
+    }
+    EXPECT_NEAR(cpBodyGetMoment(body), moment, 0.01 * moment) << name;
+  }
+}
+
+TEST(Chipmunk, EveryHullIsAcceptedUnchanged) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Ring> hulls;
+  for (int i = 0; i < 300; ++i) {
+    const int sides = 3 + static_cast<int>(random() % 14);
+    hulls.push_back(test::regular_polygon({10 * unit(random), 10 * unit(random)},
+                                          0.05 + 1.5 * unit(random), sides, unit(random) * 6.28));
+  }
+  const std::string bytes = write_bundle({test::scene_asset("random", hulls, 0.0)});
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  cpBody* body = cpBodyNew(1, 1);
+  const runtime::Asset asset = bundle.find("random");
+  const chipmunk::ShapeReport report = chipmunk::add_shapes(nullptr, body, asset, asset.level(0));
+  EXPECT_EQ(report.created, hulls.size());
+  EXPECT_EQ(report.altered, 0u);
+  cpBodyEachShape(
+      body, [](cpBody*, cpShape* shape, void*) { cpShapeFree(shape); }, nullptr);
+  cpBodyFree(body);
+}
+
+}  // namespace
+}  // namespace hullcook
