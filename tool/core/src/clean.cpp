@@ -169,10 +169,10 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
         fail(ring_name(ring_index) +
              ": fewer than 3 distinct points after removing repeated and collinear vertices");
       }
+      // Zero area with 3 non-collinear points means the ring meets itself: reported below.
       const double area = signed_area(ring);
-      if (area == 0.0) fail(ring_name(ring_index) + ": zero area");
       const bool want_ccw = ring_index == 0;
-      if ((area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
+      if (area != 0.0 && (area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
     };
     clean_ring(region.outer, 0);
     for (std::size_t h = 0; h < region.holes.size(); ++h) {
@@ -204,6 +204,11 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
         fail(region_name + ": holes " + std::to_string(e.ring) + " and " + std::to_string(f.ring) +
              " cross or touch" + where);
       }
+    }
+    if (signed_area(region.outer) == 0.0) fail(ring_name(0) + ": zero area");
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      if (signed_area(region.holes[h]) == 0.0)
+        fail(ring_name(static_cast<int>(h + 1)) + ": zero area");
     }
     // No boundaries meet, so one vertex decides containment.
     std::vector<Box> boxes;

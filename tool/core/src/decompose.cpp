@@ -43,7 +43,10 @@ double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // The outer boundary's concavity under a measure.
 struct OuterConcavity {
-  std::vector<double> vertex;   // per vertex: the value Eq. 8 and the witness use
+  std::vector<double> vertex;  // per vertex: the value Eq. 8 and the witness use
+  // Per vertex, the values that decide splitting (H1's); differs from vertex only under H2,
+  // whose witness depends on τ. Eq. 5 uses these so hole depths do not depend on τ.
+  std::vector<double> depth;
   double value = 0.0;           // decides splitting (for H2: the H1 value, see decompose.h)
   std::size_t witness = kNone;  // the notch with the largest vertex value
 };
@@ -98,7 +101,6 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau) {
     }
     const bool use_sp = measure == Measure::sp || (measure != Measure::sl && hazard);
     double pocket_value = sl_max;
-    bool vertex_is_sl = true;
     if (use_sp) {
       chain.clear();
       for (std::size_t i = s;; i = (i + 1) % n) {
@@ -110,13 +112,16 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau) {
       for (double d : paths) sp_max = std::max(sp_max, d);
       pocket_value = sp_max;
       // H2 keeps the straight-line values (and witness) of a pocket already deeper than τ.
-      if (!(measure == Measure::h2 && sl_max > tau)) {
-        vertex_is_sl = false;
-        std::size_t k = 1;
-        for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) result.vertex[i] = paths[k++];
+      const bool keep_sl = measure == Measure::h2 && sl_max > tau;
+      if (keep_sl && result.depth.empty()) result.depth = result.vertex;
+      std::size_t k = 1;
+      for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n, ++k) {
+        if (!keep_sl) result.vertex[i] = paths[k];
+        if (!result.depth.empty()) result.depth[i] = paths[k];
       }
+    } else if (!result.depth.empty()) {
+      for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) result.depth[i] = result.vertex[i];
     }
-    (void)vertex_is_sl;
     result.value = std::max(result.value, pocket_value);
     for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
       if (result.vertex[i] > best_witness_value && is_notch(ring, i)) {
@@ -209,7 +214,8 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
       info = outer_fallback[h];
     }
     const Ring& hole = region.holes[h];
-    double base = info.closest_ring == 0 ? outer.vertex[info.closest]
+    const std::vector<double>& depth = outer.depth.empty() ? outer.vertex : outer.depth;
+    double base = info.closest_ring == 0 ? depth[info.closest]
                                          : self(self, std::size_t(info.closest_ring - 1));
     info.value = base + distance(vertex_of(info), hole[info.joined]) +
                  distance(hole[info.joined], hole[info.far_end]) + delta;
@@ -349,15 +355,11 @@ Evaluation evaluate(const Region& region, Measure measure, double tau) {
   if (!region.holes.empty()) {
     e.holes = measure_holes(region, e.outer);
     for (std::size_t h = 0; h < e.holes.size(); ++h) {
-      if (e.holes[h].value > e.value || e.deepest_hole < 0) {
-        if (e.holes[h].value > e.value) e.value = e.holes[h].value;
+      if (e.deepest_hole < 0 || e.holes[h].value > e.holes[std::size_t(e.deepest_hole)].value) {
         e.deepest_hole = static_cast<int>(h);
       }
     }
-    double deepest = -1.0;
-    for (std::size_t h = 0; h < e.holes.size(); ++h) {
-      if (e.holes[h].value > deepest) deepest = e.holes[h].value, e.deepest_hole = int(h);
-    }
+    e.value = std::max(e.value, e.holes[std::size_t(e.deepest_hole)].value);
   }
   return e;
 }

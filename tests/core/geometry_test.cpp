@@ -1,0 +1,82 @@
+#include "hullcook/core/geometry.h"
+
+#include "hullcook/core/predicates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace hullcook {
+namespace {
+
+TEST(Geometry, SignedAreaAndLocation) {
+  const Ring square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_DOUBLE_EQ(signed_area(square), 4.0);
+  EXPECT_DOUBLE_EQ(signed_area(Ring(square.rbegin(), square.rend())), -4.0);
+  EXPECT_EQ(locate_point(square, {1, 1}), Location::inside);
+  EXPECT_EQ(locate_point(square, {2, 1}), Location::boundary);
+  EXPECT_EQ(locate_point(square, {0, 0}), Location::boundary);
+  EXPECT_EQ(locate_point(square, {3, 1}), Location::outside);
+  const Region with_hole{square, {{{0.5, 0.5}, {0.5, 1.5}, {1.5, 1.5}, {1.5, 0.5}}}};
+  EXPECT_DOUBLE_EQ(region_area(with_hole), 3.0);
+  EXPECT_EQ(locate_point(with_hole, {1, 1}), Location::outside);
+  EXPECT_EQ(locate_point(with_hole, {0.25, 1}), Location::inside);
+  EXPECT_DOUBLE_EQ(point_segment_distance({1, 1}, {0, 0}, {2, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(point_segment_distance({3, 4}, {0, 0}, {0, 0}), 5.0);
+  EXPECT_DOUBLE_EQ(point_segment_distance({-3, 4}, {0, 0}, {2, 0}), 5.0);
+}
+
+TEST(Geometry, ConvexHullIsStrictlyConvexAndContainsEveryPoint) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> grid(0, 12);  // many collinear and repeated points
+  for (int trial = 0; trial < 200; ++trial) {
+    Ring points;
+    for (int i = 0; i < 40; ++i) points.push_back({double(grid(random)), double(grid(random))});
+    const Ring hull = convex_hull(points);
+    ASSERT_GE(hull.size(), 3u);
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      ASSERT_GT(orientation(hull[i], hull[(i + 1) % hull.size()], hull[(i + 2) % hull.size()]), 0);
+    }
+    for (Vec2 p : points) ASSERT_NE(locate_point(hull, p), Location::outside);
+  }
+  EXPECT_EQ(convex_hull({{0, 0}, {1, 1}, {2, 2}, {1, 1}}).size(), 2u);
+  EXPECT_EQ(convex_hull({{3, 3}, {3, 3}}).size(), 1u);
+}
+
+TEST(Geometry, MinimumEnclosingCircleMatchesBruteForce) {
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal(0.0, 10.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    Ring points;
+    for (int i = 0; i < 15; ++i) points.push_back({normal(random), normal(random)});
+    const Circle circle = minimum_enclosing_circle(points);
+    for (Vec2 p : points) {
+      ASSERT_LE(std::hypot(p.x - circle.center.x, p.y - circle.center.y),
+                circle.radius * (1 + 1e-9));
+    }
+    // The smallest circle through 2 or 3 of the points that holds them all.
+    double best = 1e300;
+    auto try_circle = [&](Vec2 center, double radius) {
+      for (Vec2 p : points) {
+        if (std::hypot(p.x - center.x, p.y - center.y) > radius * (1 + 1e-9)) return;
+      }
+      best = std::min(best, radius);
+    };
+    const std::size_t n = points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        try_circle((points[i] + points[j]) * 0.5,
+                   std::hypot(points[i].x - points[j].x, points[i].y - points[j].y) / 2);
+        for (std::size_t k = j + 1; k < n; ++k) {
+          const Circle c = minimum_enclosing_circle({points[i], points[j], points[k]});
+          try_circle(c.center, c.radius);
+        }
+      }
+    }
+    EXPECT_NEAR(circle.radius, best, 1e-9 * best);
+  }
+}
+
+}  // namespace
+}  // namespace hullcook

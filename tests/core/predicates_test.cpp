@@ -1,0 +1,80 @@
+// The predicates' signs against exact 128-bit integer arithmetic, on near-degenerate input.
+#include "hullcook/core/predicates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace hullcook {
+namespace {
+
+int exact_sign(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t cx,
+               std::int64_t cy) {
+  const __int128 det =
+      static_cast<__int128>(ax - cx) * (by - cy) - static_cast<__int128>(ay - cy) * (bx - cx);
+  return (det > 0) - (det < 0);
+}
+
+TEST(Predicates, ExactOnNearlyCollinearIntegerPoints) {
+  // Coordinates up to 2^51 are exact doubles; their differences and products are not.
+  std::mt19937_64 random(12345);
+  std::uniform_int_distribution<std::int64_t> coordinate(-(std::int64_t{1} << 50),
+                                                         std::int64_t{1} << 50);
+  std::uniform_int_distribution<std::int64_t> offset(-2, 2);
+  std::uniform_int_distribution<int> step(-1000, 1000);
+  int degenerate = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::int64_t ax = coordinate(random), ay = coordinate(random);
+    const std::int64_t dx = coordinate(random) / 4096, dy = coordinate(random) / 4096;
+    const int k = step(random);
+    const std::int64_t bx = ax + dx, by = ay + dy;
+    const std::int64_t cx = ax + k * dx + offset(random), cy = ay + k * dy + offset(random);
+    const int expected = exact_sign(ax, ay, bx, by, cx, cy);
+    degenerate += expected == 0;
+    const Vec2 a{double(ax), double(ay)}, b{double(bx), double(by)}, c{double(cx), double(cy)};
+    ASSERT_EQ(orientation(a, b, c), expected) << trial;
+    ASSERT_EQ(orientation(b, c, a), expected) << trial;
+    ASSERT_EQ(orientation(b, a, c), -expected) << trial;
+  }
+  EXPECT_GT(degenerate, 100);  // the test does exercise exact collinearity
+}
+
+TEST(Predicates, OneUlpOffLine) {
+  // y = 2x is exact in binary, so these points are exactly collinear.
+  const Vec2 a{0.1, 0.2}, b{0.3, 0.6};
+  for (double x : {0.7, 12.345678901234567, 1e-3, 3e15}) {
+    const Vec2 on{x, 2.0 * x};
+    EXPECT_EQ(orientation(a, b, on), 0) << x;
+    EXPECT_EQ(orientation(a, b, {x, std::nextafter(2.0 * x, 1e300)}), 1) << x;
+    EXPECT_EQ(orientation(a, b, {x, std::nextafter(2.0 * x, -1e300)}), -1) << x;
+  }
+}
+
+TEST(Predicates, TinyOffsetsAtLargeCoordinates) {
+  const double base = 1e15;
+  const Vec2 a{base, base}, b{base + 1.0, base + 1.0};
+  EXPECT_EQ(orientation(a, b, {base + 2.0, base + 2.0}), 0);
+  EXPECT_EQ(orientation(a, b, {base + 2.0, base + 2.125}), 1);
+  EXPECT_EQ(orientation(a, b, {base + 2.0, base + 1.875}), -1);
+  // 1e-16 offsets near 1: representable, must not be lost.
+  const Vec2 p{1.0, 1.0}, q{2.0, 2.0};
+  EXPECT_EQ(orientation(p, q, {0.5, 0.5 + 1e-16}), 1);
+  EXPECT_EQ(orientation(p, q, {0.5, 0.5 - 1e-16}), -1);
+}
+
+TEST(Predicates, SegmentIntersection) {
+  EXPECT_TRUE(segments_intersect({0, 0}, {2, 2}, {0, 2}, {2, 0}));
+  EXPECT_TRUE(segments_cross_properly({0, 0}, {2, 2}, {0, 2}, {2, 0}));
+  EXPECT_TRUE(segments_intersect({0, 0}, {2, 0}, {1, 0}, {1, 5}));  // touching
+  EXPECT_FALSE(segments_cross_properly({0, 0}, {2, 0}, {1, 0}, {1, 5}));
+  EXPECT_TRUE(segments_intersect({0, 0}, {2, 0}, {1, 0}, {3, 0}));  // collinear overlap
+  EXPECT_FALSE(segments_intersect({0, 0}, {1, 0}, {2, 0}, {3, 0}));
+  EXPECT_FALSE(segments_intersect({0, 0}, {1, 1}, {0, 1e-300}, {1, 1 + 1e-15}));
+  EXPECT_TRUE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, 0.6}));
+  EXPECT_FALSE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, std::nextafter(0.6, 1.0)}));
+}
+
+}  // namespace
+}  // namespace hullcook

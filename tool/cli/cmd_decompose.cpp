@@ -1,0 +1,101 @@
+// hullcook decompose: the ACD of one .poly file, its one-line summary and the debug JSON.
+#include "commands.h"
+
+#include "hullcook/cook/cook.h"
+#include "hullcook/cook/debug_json.h"
+#include "hullcook/cook/output_file.h"
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/poly_io.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace hullcook::cli {
+namespace {
+
+struct DecomposeOptions {
+  std::string input;
+  std::string tau = "0";
+  std::string measure = "h1";
+  double sc = 0.1;
+  double sd = 1.0;
+  std::size_t max_pieces = 0;
+  std::string json;
+};
+
+int run_decompose(const DecomposeOptions& options) {
+  const Tolerance tolerance = Tolerance::parse(options.tau);
+  const std::optional<Measure> measure = parse_measure(options.measure);
+  if (!measure) {
+    throw UsageError("--measure: '" + options.measure + "' is not one of sl, sp, h1, h2");
+  }
+  const std::vector<Region> regions = read_poly_file(options.input);
+  const double tau = tolerance.resolve(enclosing_radius(regions));
+  const DecomposeSettings settings{tau, *measure, options.sc, options.sd};
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Piece> pieces;
+  for (const Region& region : regions) {
+    const DecompositionTree tree = decompose(region, settings);
+    std::vector<Piece> part =
+        options.max_pieces ? tree.pieces_within(options.max_pieces) : tree.pieces_at(tau);
+    for (Piece& piece : part) pieces.push_back(std::move(piece));
+  }
+  const double milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  CookedAsset asset;
+  asset.name = std::filesystem::path(options.input).filename().string();
+  asset.source = options.input;
+  asset.tau = tau;
+  asset.measure = measure_name(*measure);
+  asset.regions = regions;
+  for (const Piece& piece : pieces) {
+    asset.pieces.push_back({piece.component, piece.hull, piece.concavity});
+  }
+  asset.levels.push_back({tau, {}});
+  for (const Piece& piece : pieces) asset.levels[0].hulls.push_back(piece.hull);
+  asset.stats.pieces = pieces.size();
+  asset.stats.max_concavity = max_concavity(pieces);
+  asset.stats.convexity = convexity(pieces);
+  asset.stats.decompose_ms = milliseconds;
+  asset.stats.total_ms = milliseconds;
+
+  if (!options.json.empty()) write_file_atomically(options.json, debug_json({asset}));
+  std::printf("%s: %zu pieces, max concavity %.6g, convexity %.6f, %.3f ms (tau %.6g, %s)\n",
+              options.input.c_str(), pieces.size(), asset.stats.max_concavity,
+              asset.stats.convexity, milliseconds, tau, asset.measure.c_str());
+  return 0;
+}
+
+void add_decompose(CLI::App& root, CommandAction& action) {
+  auto options = std::make_shared<DecomposeOptions>();
+  CLI::App* command = root.add_subcommand(
+      "decompose", "Approximate convex decomposition of a .poly file (debug JSON and summary)");
+  command->add_option("input", options->input, "Input .poly file")->required();
+  command
+      ->add_option("--tau", options->tau,
+                   "Concavity tolerance: input units (0.5) or percent of the minimum "
+                   "enclosing circle's radius (1%); 0 = exact convex decomposition")
+      ->required();
+  command->add_option("--measure", options->measure, "Concavity measure: sl, sp, h1 or h2")
+      ->capture_default_str();
+  command->add_option("--sc", options->sc, "Eq. 8 weight of the concavity at the cut's far end")
+      ->capture_default_str();
+  command->add_option("--sd", options->sd, "Eq. 8 weight of the cut's length")
+      ->capture_default_str();
+  command->add_option("--max-pieces", options->max_pieces,
+                      "Shape budget: the finest level with at most this many pieces per region");
+  command->add_option("--json", options->json, "Write the debug JSON here");
+  command->callback([options, &action] { action = [options] { return run_decompose(*options); }; });
+}
+
+const CommandRegistration registered{30, add_decompose};
+
+}  // namespace
+}  // namespace hullcook::cli

@@ -1,0 +1,143 @@
+#include "hullcook/cook/debug_json.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace hullcook {
+namespace {
+
+class JsonWriter {
+ public:
+  std::string& out() { return out_; }
+
+  void number(double value) {
+    if (!std::isfinite(value)) {
+      out_ += "null";  // JSON has no infinities; never produced by valid cooking
+      return;
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    out_ += buffer;
+  }
+
+  void integer(std::size_t value) { out_ += std::to_string(value); }
+
+  void string(const std::string& text) {
+    out_ += '"';
+    for (unsigned char c : text) {
+      switch (c) {
+        case '"':
+          out_ += "\\\"";
+          break;
+        case '\\':
+          out_ += "\\\\";
+          break;
+        case '\n':
+          out_ += "\\n";
+          break;
+        case '\r':
+          out_ += "\\r";
+          break;
+        case '\t':
+          out_ += "\\t";
+          break;
+        default:
+          if (c < 0x20) {
+            char buffer[8];
+            std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+            out_ += buffer;
+          } else {
+            out_ += static_cast<char>(c);
+          }
+      }
+    }
+    out_ += '"';
+  }
+
+  void point(Vec2 p) {
+    out_ += '[';
+    number(p.x);
+    out_ += ", ";
+    number(p.y);
+    out_ += ']';
+  }
+
+  void ring(const Ring& ring) {
+    out_ += '[';
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (i) out_ += ", ";
+      point(ring[i]);
+    }
+    out_ += ']';
+  }
+
+  void region(const Region& region) {
+    out_ += "{\"outer\": ";
+    ring(region.outer);
+    out_ += ", \"holes\": [";
+    for (std::size_t i = 0; i < region.holes.size(); ++i) {
+      if (i) out_ += ", ";
+      ring(region.holes[i]);
+    }
+    out_ += "]}";
+  }
+
+ private:
+  std::string out_;
+};
+
+}  // namespace
+
+std::string debug_json(const std::vector<CookedAsset>& assets) {
+  JsonWriter json;
+  std::string& out = json.out();
+  out += "{\"hullcook\": 1,\n \"assets\": [";
+  for (std::size_t a = 0; a < assets.size(); ++a) {
+    const CookedAsset& asset = assets[a];
+    out += a ? ",\n  {" : "\n  {";
+    out += "\"name\": ";
+    json.string(asset.name);
+    out += ", \"source\": ";
+    json.string(asset.source);
+    out += ",\n   \"transform\": {\"scale\": ";
+    json.number(asset.transform.scale);
+    out += ", \"origin\": ";
+    json.point(asset.transform.origin);
+    out += ", \"flip_y\": ";
+    out += asset.transform.flip_y ? "true" : "false";
+    out += "},\n   \"tau\": ";
+    json.number(asset.tau);
+    out += ", \"measure\": ";
+    json.string(asset.measure);
+    out += ",\n   \"regions\": [";
+    for (std::size_t i = 0; i < asset.regions.size(); ++i) {
+      out += i ? ",\n    " : "\n    ";
+      json.region(asset.regions[i]);
+    }
+    out += "],\n   \"pieces\": [";
+    for (std::size_t i = 0; i < asset.pieces.size(); ++i) {
+      const CookedPiece& piece = asset.pieces[i];
+      out += i ? ",\n    " : "\n    ";
+      out += "{\"component\": ";
+      json.region(piece.component);
+      out += ", \"hull\": ";
+      json.ring(piece.hull);
+      out += ", \"concavity\": ";
+      json.number(piece.concavity);
+      out += '}';
+    }
+    out += "],\n   \"stats\": {\"pieces\": ";
+    json.integer(asset.stats.pieces);
+    out += ", \"max_concavity\": ";
+    json.number(asset.stats.max_concavity);
+    out += ", \"convexity\": ";
+    json.number(asset.stats.convexity);
+    out += ", \"decompose_ms\": ";
+    json.number(asset.stats.decompose_ms);
+    out += "}}";
+  }
+  out += "\n ]}\n";
+  return out;
+}
+
+}  // namespace hullcook
