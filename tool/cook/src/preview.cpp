@@ -174,7 +174,7 @@ class Preview {
     for (const CookedPiece& piece : asset_.pieces) {
       for (const Ring& ring : rings_of(piece.component)) {
         std::vector<std::vector<cv::Point>> line{points(ring)};
-        cv::polylines(canvas, line, true, kComponentColour, 1, cv::LINE_AA, kShift);
+        cv::polylines(canvas, line, true, kComponentColour, 2, cv::LINE_AA, kShift);
       }
     }
     for (const Region& region : asset_.regions) {

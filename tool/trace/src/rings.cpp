@@ -303,17 +303,34 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
         leftmost[r] = static_cast<int>(i);
     }
   }
-  // Edges bucketed by the unit rows their y range overlaps.
+  // Edges bucketed by the unit rows their y range overlaps, sorted by their smallest x.
+  struct BucketEdge {
+    double min_x;
+    int ring;
+    int index;
+  };
   const int rows = static_cast<int>(std::floor(high_y - low_y)) + 1;
-  std::vector<std::vector<std::pair<int, int>>> buckets(rows);
+  std::vector<std::vector<BucketEdge>> buckets(rows);
+  std::vector<double> widest(rows, 0.0);  // the largest x extent of an edge in each bucket
   for (int r = 0; r < count; ++r) {
     for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
-      double y0 = rings[r][i].y, y1 = rings[r][(i + 1) % n].y;
-      int first = static_cast<int>(std::floor(std::min(y0, y1) - low_y));
-      int last = static_cast<int>(std::floor(std::max(y0, y1) - low_y));
-      for (int row = first; row <= last; ++row) buckets[row].emplace_back(r, static_cast<int>(i));
+      Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
+      int first = static_cast<int>(std::floor(std::min(a.y, b.y) - low_y));
+      int last = static_cast<int>(std::floor(std::max(a.y, b.y) - low_y));
+      for (int row = first; row <= last; ++row) {
+        buckets[row].push_back({std::min(a.x, b.x), r, static_cast<int>(i)});
+        widest[row] = std::max(widest[row], std::abs(b.x - a.x));
+      }
     }
   }
+  for (auto& bucket : buckets) {
+    std::sort(bucket.begin(), bucket.end(), [](const BucketEdge& e, const BucketEdge& f) {
+      return e.min_x != f.min_x ? e.min_x < f.min_x
+                                : (e.ring != f.ring ? e.ring < f.ring : e.index < f.index);
+    });
+  }
+  std::vector<char> outer(count);
+  for (int r = 0; r < count; ++r) outer[r] = signed_area(rings[r]) > 0;
   std::vector<int> order(count);
   for (int r = 0; r < count; ++r) order[r] = r;
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -326,17 +343,23 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
     Vec2 p = rings[r][leftmost[r]];
     int hit = -1;
     double hit_x = std::numeric_limits<double>::lowest();
-    for (auto [s, i] : buckets[static_cast<int>(std::floor(p.y - low_y))]) {
-      if (s == r) continue;
-      const Ring& ring = rings[s];
-      Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+    const int row = static_cast<int>(std::floor(p.y - low_y));
+    const std::vector<BucketEdge>& bucket = buckets[row];
+    auto end = std::lower_bound(bucket.begin(), bucket.end(), p.x,
+                                [](const BucketEdge& e, double x) { return e.min_x < x; });
+    // Walking leftwards: an edge starting at min_x crosses at most at min_x + widest.
+    for (auto e = end; e != bucket.begin();) {
+      --e;
+      if (e->min_x + widest[row] <= hit_x) break;
+      if (e->ring == r) continue;
+      const Ring& ring = rings[e->ring];
+      Vec2 a = ring[e->index], b = ring[(e->index + 1) % ring.size()];
       if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
       double x = a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
-      if (x < p.x && x > hit_x) hit_x = x, hit = s;
+      if (x < p.x && x > hit_x) hit_x = x, hit = e->ring;
     }
     if (hit < 0) continue;
-    bool r_outer = signed_area(rings[r]) > 0, hit_outer = signed_area(rings[hit]) > 0;
-    parents[r] = r_outer != hit_outer ? hit : parents[hit];
+    parents[r] = outer[r] != outer[hit] ? hit : parents[hit];
   }
   return parents;
 }
