@@ -10,6 +10,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace hullcook {
 
@@ -56,7 +57,27 @@ bool is_notch(const Ring& ring, std::size_t i) {
   return orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) < 0;
 }
 
-OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau) {
+// Shortest paths of pockets already measured in an ancestor. A pocket is its chain from β- to β+;
+// a child's pocket with the same end points and length is the same chain (a cut through it would
+// shorten it), so its paths are reused instead of re-triangulating.
+struct PocketKey {
+  double sx, sy, tx, ty;
+  std::size_t length;
+  bool operator==(const PocketKey&) const = default;
+};
+struct PocketKeyHash {
+  std::size_t operator()(const PocketKey& k) const {
+    std::size_t h = k.length;
+    for (double v : {k.sx, k.sy, k.tx, k.ty}) {
+      h ^= std::hash<double>{}(v) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    }
+    return h;
+  }
+};
+using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
+
+OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
+                             PocketCache* cache = nullptr) {
   const std::size_t n = ring.size();
   OuterConcavity result;
   result.vertex.assign(n, 0.0);
@@ -102,12 +123,22 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau) {
     const bool use_sp = measure == Measure::sp || (measure != Measure::sl && hazard);
     double pocket_value = sl_max;
     if (use_sp) {
-      chain.clear();
-      for (std::size_t i = s;; i = (i + 1) % n) {
-        chain.push_back(ring[i]);
-        if (i == t) break;
+      const PocketKey key{bs.x, bs.y, bt.x, bt.y, (t + n - s) % n};
+      const std::vector<double>* cached = nullptr;
+      if (cache) {
+        if (auto it = cache->find(key); it != cache->end()) cached = &it->second;
       }
-      const std::vector<double> paths = detail::shortest_paths_to_bridge(chain);
+      std::vector<double> computed;
+      if (!cached) {
+        chain.clear();
+        for (std::size_t i = s;; i = (i + 1) % n) {
+          chain.push_back(ring[i]);
+          if (i == t) break;
+        }
+        computed = detail::shortest_paths_to_bridge(chain);
+        if (cache) cached = &cache->emplace(key, std::move(computed)).first->second;
+      }
+      const std::vector<double>& paths = cached ? *cached : computed;
       double sp_max = 0.0;
       for (double d : paths) sp_max = std::max(sp_max, d);
       pocket_value = sp_max;
@@ -348,9 +379,10 @@ struct Evaluation {
   int deepest_hole = -1;
 };
 
-Evaluation evaluate(const Region& region, Measure measure, double tau) {
+Evaluation evaluate(const Region& region, Measure measure, double tau,
+                    PocketCache* cache = nullptr) {
   Evaluation e;
-  e.outer = measure_outer(region.outer, measure, tau);
+  e.outer = measure_outer(region.outer, measure, tau, cache);
   e.value = e.outer.value;
   if (!region.holes.empty()) {
     e.holes = measure_holes(region, e.outer);
@@ -488,11 +520,12 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   tree.measure_ = settings.measure;
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
+  PocketCache cache;
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
     const Region component = tree.nodes_[std::size_t(id)].component;
-    const Evaluation e = evaluate(component, settings.measure, settings.tau);
+    const Evaluation e = evaluate(component, settings.measure, settings.tau, &cache);
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;
     std::optional<std::pair<Region, Region>> parts;
