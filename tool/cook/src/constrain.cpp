@@ -1,5 +1,7 @@
 #include "hullcook/cook/constrain.h"
 
+#include "hullcook/core/geometry.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -13,48 +15,20 @@ namespace {
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  Vec2 ab = b - a;
-  double length2 = glm::dot(ab, ab);
-  double t = length2 > 0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + ab * t));
-}
-
 double distance_to_ring(Vec2 p, const Ring& ring) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    best = std::min(best, distance_to_segment(p, ring[i], ring[(i + 1) % n]));
+    best = std::min(best, point_segment_distance(p, ring[i], ring[(i + 1) % n]));
   }
   return best;
 }
 
-// Crossing-number test; points on the boundary may go either way, which is harmless here
-// because their distance to the boundary is zero.
-bool inside_ring(Vec2 p, const Ring& ring) {
-  bool inside = false;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Vec2& a = ring[i];
-    const Vec2& b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
-// Distance from p to the filled component (zero inside it).
+// Distance from p to the filled component (zero inside it or on its boundary).
 double distance_to_component(Vec2 p, const Region& component) {
+  if (locate_point(component, p) != Location::outside) return 0.0;
   double boundary = distance_to_ring(p, component.outer);
   for (const Ring& hole : component.holes) boundary = std::min(boundary, distance_to_ring(p, hole));
-  bool inside = inside_ring(p, component.outer);
-  for (const Ring& hole : component.holes) inside = inside && !inside_ring(p, hole);
-  return inside ? 0.0 : boundary;
-}
-
-double signed_area(const Ring& ring) {
-  double twice = 0;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) twice += cross(ring[i], ring[(i + 1) % n]);
-  return twice / 2;
+  return boundary;
 }
 
 // Height of vertex i above the line through its neighbours; negative for a reflex turn.
@@ -131,8 +105,6 @@ Ring without_edge(const Ring& hull, std::size_t i, Vec2 apex) {
   return grown;
 }
 
-double distance_to_hull_boundary(Vec2 p, const Ring& hull) { return distance_to_ring(p, hull); }
-
 class HullFitter {
  public:
   HullFitter(const Region& component, double tau, const EngineLimits& limits)
@@ -142,7 +114,7 @@ class HullFitter {
   std::optional<Ring> fit(Ring hull) {
     allowed_.clear();
     for_each_component_vertex(
-        [&](Vec2 v) { allowed_.push_back(std::max(tau_, distance_to_hull_boundary(v, hull))); });
+        [&](Vec2 v) { allowed_.push_back(std::max(tau_, distance_to_ring(v, hull))); });
     // Reducing the vertex count creates new apexes, which may need welding again.
     for (int round = 0; round < 4; ++round) {
       std::optional<Ring> mended = mend_local_violations(std::move(hull));
@@ -287,7 +259,7 @@ class HullFitter {
     std::size_t k = 0;
     bool ok = true;
     for_each_component_vertex([&](Vec2 v) {
-      if (ok && distance_to_hull_boundary(v, hull) > allowed_[k] * (1 + 1e-12)) ok = false;
+      if (ok && distance_to_ring(v, hull) > allowed_[k] * (1 + 1e-12)) ok = false;
       ++k;
     });
     return ok;

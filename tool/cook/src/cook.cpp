@@ -1,0 +1,334 @@
+// cook(): inputs → traced or read polygons → decomposition tree → levels →
+// engine limits.
+#include "hullcook/cook/cook.h"
+
+#include "hullcook/cook/constrain.h"
+#include "hullcook/core/clean.h"
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/poly_io.h"
+#include "hullcook/trace/trace.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+
+namespace hullcook {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct InputFile {
+  std::filesystem::path path;
+  std::string name;  // relative to the input root, '/'-separated
+};
+
+bool is_poly_file(const std::filesystem::path& path) { return path.extension() == ".poly"; }
+
+// Expands directories (recursively, in sorted order) into image files; files
+// are taken as given.
+std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<InputFile> files;
+  for (const std::filesystem::path& input : inputs) {
+    std::error_code error;
+    if (std::filesystem::is_directory(input, error)) {
+      std::vector<InputFile> found;
+      for (auto it = std::filesystem::recursive_directory_iterator(input, error);
+           !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+        if (it->is_regular_file() && is_image_file(it->path())) {
+          found.push_back({it->path(), it->path().lexically_relative(input).generic_string()});
+        }
+      }
+      if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
+      std::sort(found.begin(), found.end(),
+                [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (std::filesystem::is_regular_file(input, error)) {
+      files.push_back({input, input.filename().generic_string()});
+    } else {
+      throw InputError(input.string() + ": no such file or directory");
+    }
+  }
+  std::set<std::string> names;
+  for (const InputFile& file : files) {
+    if (!names.insert(file.name).second) {
+      throw InputError(file.path.string() + ": two inputs would both be named '" + file.name +
+                       "'; cook them separately or from a common directory");
+    }
+  }
+  return files;
+}
+
+Region transformed(const Region& region, const Transform& transform) {
+  Region out;
+  out.outer.reserve(region.outer.size());
+  for (Vec2 v : region.outer) out.outer.push_back(transform.apply(v));
+  for (const Ring& hole : region.holes) {
+    Ring& moved = out.holes.emplace_back();
+    moved.reserve(hole.size());
+    for (Vec2 v : hole) moved.push_back(transform.apply(v));
+  }
+  return out;
+}
+
+std::size_t vertex_count(const std::vector<Region>& regions) {
+  std::size_t count = 0;
+  for (const Region& region : regions) {
+    count += region.outer.size();
+    for (const Ring& hole : region.holes) count += hole.size();
+  }
+  return count;
+}
+
+std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces) {
+  std::vector<CookedPiece> cooked;
+  cooked.reserve(pieces.size());
+  for (Piece& piece : pieces) {
+    cooked.push_back({std::move(piece.component), std::move(piece.hull), piece.concavity});
+  }
+  return cooked;
+}
+
+// The decomposition of every region of one asset, and the levels read off its
+// trees.
+class AssetDecomposer {
+ public:
+  AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings)
+      : settings_(settings) {
+    trees_.reserve(regions.size());
+    for (const Region& region : regions) trees_.push_back(decompose(region, settings));
+  }
+
+  std::vector<Piece> pieces_at(double tau) const {
+    std::vector<Piece> pieces;
+    for (const DecompositionTree& tree : trees_) {
+      std::vector<Piece> part = tree.pieces_at(tau);
+      std::move(part.begin(), part.end(), std::back_inserter(pieces));
+    }
+    return pieces;
+  }
+
+  std::size_t piece_count_at(double tau) const {
+    std::size_t count = 0;
+    for (const DecompositionTree& tree : trees_) count += tree.piece_count_at(tau);
+    return count;
+  }
+
+  // The smallest tolerance >= tau whose decomposition has at most max_pieces pieces over all
+  // regions: the decomposition only changes at the trees' node concavities, so those are the
+  // candidates. Falls back to the coarsest level (one piece per region) when none fits.
+  double tau_for_budget(double tau, std::size_t max_pieces) const {
+    std::vector<double> candidates{tau};
+    for (const DecompositionTree& tree : trees_) {
+      for (double level : tree.level_taus()) {
+        if (level > tau) candidates.push_back(level);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    for (double candidate : candidates) {
+      if (piece_count_at(candidate) <= max_pieces) return candidate;
+    }
+    return candidates.back();
+  }
+
+ private:
+  DecomposeSettings settings_;
+  std::vector<DecompositionTree> trees_;
+};
+
+struct PreparedInput {
+  std::vector<Region> regions;  // [input units], as read or traced
+  Transform transform;
+  int width = 0, height = 0;
+  std::size_t traced_vertices = 0;
+  double enclosing_radius = 0;  // [input units]
+  std::vector<std::string> warnings;
+  double trace_ms = 0;
+};
+
+TraceSettings trace_settings(const Settings& settings, double simplify_px) {
+  TraceSettings trace;
+  trace.alpha = settings.alpha;
+  trace.color_key = settings.color_key;
+  trace.min_blob_area = settings.min_blob_area;
+  trace.min_hole_area = settings.min_hole_area;
+  trace.max_pixels = settings.max_pixels;
+  trace.simplify = simplify_px;
+  return trace;
+}
+
+// The simplification bound: a quarter of τ (the rest of the budget is the
+// decomposition's), and never more than a pixel, so that outlines stay
+// recognisable at large τ.
+double default_simplify(double tau_px) { return std::clamp(tau_px / 4, 0.05, 1.0); }
+
+PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
+  auto start = Clock::now();
+  PreparedInput prepared;
+  AlphaImage image = load_alpha(file.path, trace_settings(settings, 0));
+  prepared.width = image.width;
+  prepared.height = image.height;
+  double simplify = settings.simplify.value_or(0);
+  if (!settings.simplify) {
+    if (settings.tau.relative) {
+      // τ depends on the outline's radius: measure it on a finely simplified
+      // trace first.
+      TraceResult fine = trace_alpha(image, trace_settings(settings, 0.05));
+      double radius = fine.regions.empty() ? 0 : enclosing_radius(fine.regions);
+      simplify = default_simplify(settings.tau.resolve(radius));
+    } else {
+      simplify = default_simplify(settings.tau.value);
+    }
+  }
+  TraceResult traced = trace_alpha(image, trace_settings(settings, simplify));
+  prepared.regions = std::move(traced.regions);
+  prepared.traced_vertices = traced.traced_vertices;
+  prepared.warnings = std::move(traced.warnings);
+  double scale = 1.0 / settings.pixels_per_unit;
+  prepared.transform =
+      Transform{scale, Vec2{settings.pivot_u * image.width, settings.pivot_v * image.height},
+                !settings.y_down};
+  prepared.trace_ms = milliseconds_since(start);
+  return prepared;
+}
+
+PreparedInput prepare_polygons(const InputFile& file, const Settings& settings) {
+  PreparedInput prepared;
+  prepared.regions = read_poly_file(file.path);
+  prepared.traced_vertices = vertex_count(prepared.regions);
+  prepared.transform = Transform{1.0 / settings.pixels_per_unit, Vec2{0, 0}, false};
+  return prepared;
+}
+
+CookedAsset cook_one(const InputFile& file, const Settings& settings) {
+  auto start = Clock::now();
+  PreparedInput input =
+      is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
+  CookedAsset asset;
+  asset.name = file.name;
+  asset.source = file.path.generic_string();
+  asset.image_width = input.width;
+  asset.image_height = input.height;
+  asset.pixels_per_unit = settings.pixels_per_unit;
+  asset.pivot = Vec2{settings.pivot_u, settings.pivot_v};
+  asset.transform = input.transform;
+  asset.measure = settings.measure;
+  asset.physics = settings.physics;
+  asset.warnings = std::move(input.warnings);
+  asset.stats.traced_vertices = input.traced_vertices;
+  asset.stats.trace_ms = input.trace_ms;
+
+  std::vector<Region> regions;
+  regions.reserve(input.regions.size());
+  for (const Region& region : input.regions)
+    regions.push_back(transformed(region, input.transform));
+  regions = clean_and_validate(std::move(regions), asset.source);
+  asset.regions = regions;
+
+  // Tolerances are given in input units (or relative to R); the output is in
+  // output units.
+  double radius = regions.empty() ? 0 : enclosing_radius(regions);
+  double scale = input.transform.scale;
+  auto resolve = [&](const Tolerance& tolerance) {
+    return tolerance.relative ? tolerance.value * radius : tolerance.value * scale;
+  };
+  std::vector<double> level_taus{resolve(settings.tau)};
+  for (const Tolerance& lod : settings.lods) level_taus.push_back(resolve(lod));
+  std::sort(level_taus.begin(), level_taus.end());
+  level_taus.erase(std::unique(level_taus.begin(), level_taus.end()), level_taus.end());
+
+  DecomposeSettings decompose_settings;
+  decompose_settings.tau = level_taus.front();
+  decompose_settings.measure = *parse_measure(settings.measure);
+  decompose_settings.sc = settings.sc;
+  decompose_settings.sd = settings.sd;
+  auto decompose_start = Clock::now();
+  AssetDecomposer decomposer(regions, decompose_settings);
+  if (settings.max_pieces > 0) {
+    double budget_tau = decomposer.tau_for_budget(level_taus.front(), settings.max_pieces);
+    if (budget_tau > level_taus.front()) {
+      std::erase_if(level_taus, [&](double t) { return t < budget_tau; });
+      if (level_taus.empty() || level_taus.front() != budget_tau) {
+        level_taus.insert(level_taus.begin(), budget_tau);
+      }
+    }
+  }
+  asset.tau = level_taus.front();
+
+  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld)};
+  auto split = [&](const Region& component, double tau) {
+    DecomposeSettings finer = decompose_settings;
+    finer.tau = tau;
+    return to_cooked(decompose(component, finer).pieces_at(tau));
+  };
+  for (double tau : level_taus) {
+    std::vector<Piece> pieces = decomposer.pieces_at(tau);
+    CookedLevel level{tau, {}};
+    if (asset.levels.empty()) {
+      asset.stats.pieces = pieces.size();
+      asset.stats.convexity = convexity(pieces);
+      for (const Piece& piece : pieces) {
+        asset.stats.max_concavity = std::max(asset.stats.max_concavity, piece.concavity);
+      }
+      asset.stats.decompose_ms = milliseconds_since(decompose_start);
+    }
+    std::vector<CookedPiece> constrained =
+        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.warnings);
+    for (const CookedPiece& piece : constrained) level.hulls.push_back(piece.hull);
+    if (asset.levels.empty()) asset.pieces = std::move(constrained);
+    asset.levels.push_back(std::move(level));
+  }
+  if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
+  asset.stats.total_ms = milliseconds_since(start);
+  return asset;
+}
+
+}  // namespace
+
+CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings) {
+  if (!parse_measure(settings.measure)) {
+    throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
+  }
+  if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
+  std::vector<InputFile> files = collect_inputs(inputs);
+  CookResult result;
+  result.assets.resize(files.size());
+
+  // Assets are independent: cook them on a pool of threads, each into its own
+  // slot, so the result never depends on the thread count. The first error (in
+  // input order) wins.
+  unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
+  threads = std::clamp<unsigned>(threads, 1, std::max<std::size_t>(files.size(), 1));
+  std::vector<std::exception_ptr> errors(files.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < files.size(); i = next++) {
+      try {
+        result.assets[i] = cook_one(files[i], settings);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  return result;
+}
+
+}  // namespace hullcook
