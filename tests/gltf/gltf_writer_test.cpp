@@ -447,6 +447,30 @@ TEST(GltfWriter, PhysicsExtensionsReferenceTheHullMeshes) {
   EXPECT_EQ(meshes_seen.size(), root["meshes"].size());
 }
 
+// Hulls against the contract never crash the writer: one without area gets no mesh (the extras
+// keep it), a clockwise one gets a prism that still faces out.
+TEST(GltfWriter, DegenerateAndClockwiseHullsAreMirroredSafely) {
+  CookedAsset asset = test::base_asset("odd");
+  const Ring clockwise = {{0.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {1.0, 0.0}};
+  asset.levels.push_back({0.0,
+                          {{{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}},
+                           {{0.5, 0.5}, {0.5, 0.5}, {0.5, 0.5}},
+                           {{0.0, 0.0}, {1.0, 0.0}},
+                           clockwise}});
+  for (bool draco : {false, true}) {
+    json root = json::parse(write_gltf({asset}, {.draco = draco}));
+    ASSERT_EQ(root["nodes"][0]["children"].size(), 1u);
+    const json& child = root["nodes"][root["nodes"][0]["children"][0].get<int>()];
+    EXPECT_EQ(child["extras"]["hullcook"]["hull"], 3);
+    EXPECT_EQ(root["nodes"][0]["extras"]["hullcook"]["levels"][0]["hulls"].size(), 4u);
+  }
+  tinygltf::Model model = load_with_tinygltf(write_gltf({asset}, {}), false);
+  const tinygltf::Primitive& primitive = model.meshes.at(0).primitives.at(0);
+  std::vector<Point3> points = read_positions(model, primitive.attributes.at("POSITION"));
+  const double half = kGltfHalfThickness * 2.0;
+  EXPECT_NEAR(enclosed_volume(points, read_indices(model, primitive.indices)), 2.0 * half, 1e-6);
+}
+
 TEST(GltfWriter, NonFiniteCoordinatesAreRefusedNamingTheAsset) {
   CookedAsset asset = test::box_asset();
   asset.levels[1].hulls[0][2].y = std::numeric_limits<double>::quiet_NaN();

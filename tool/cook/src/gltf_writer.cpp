@@ -86,6 +86,18 @@ Prism extrude(const Ring& hull, double half_thickness, const std::string& asset_
   return prism;
 }
 
+// Twice the signed area of the ring once its vertices are rounded to floats, as in the mesh.
+double float_area(const Ring& ring) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % ring.size()];
+    twice += double{static_cast<float>(a.x)} * double{static_cast<float>(b.y)} -
+             double{static_cast<float>(a.y)} * double{static_cast<float>(b.x)};
+  }
+  return twice;
+}
+
 // A float as JSON through its shortest decimal form, so that 0.2f prints as 0.2 and reads back as
 // the same float. Not for accessor min/max, which must equal the stored floats exactly as doubles.
 json float_json(float value) {
@@ -459,9 +471,18 @@ int add_asset(Document& document, const CookedAsset& asset) {
   const std::vector<Ring> no_hulls;
   const std::vector<Ring>& hulls = asset.levels.empty() ? no_hulls : asset.levels.front().hulls;
   for (std::size_t i = 0; i < hulls.size(); ++i) {
-    if (hulls[i].size() < 3) continue;  // no triangle to mirror it with; the extras keep it
+    // A hull without area as floats has no prism to mirror it with; the extras keep it. A
+    // clockwise one (against the contract) is mirrored reversed, so its prism still faces out.
+    const double area = float_area(hulls[i]);
+    if (!std::isfinite(area)) {
+      throw OutputError("asset " + asset.name + ": hull " + std::to_string(i) +
+                        " has a coordinate that does not fit a 32-bit float");
+    }
+    if (hulls[i].size() < 3 || area == 0.0) continue;
+    Ring ring = hulls[i];
+    if (area < 0.0) std::reverse(ring.begin(), ring.end());
     const std::string name = asset.name + "/hull" + std::to_string(i);
-    const int mesh = document.add_mesh(extrude(hulls[i], half_thickness, asset.name), name);
+    const int mesh = document.add_mesh(extrude(ring, half_thickness, asset.name), name);
     const int shape = document.add_shape({{"type", "convex"}, {"convex", {{"mesh", mesh}}}});
     const int node_index = static_cast<int>(asset_node + 1 + children.size());
 
