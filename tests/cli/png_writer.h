@@ -45,6 +45,17 @@ inline std::string zlib_stored(const std::string& raw) {
   return out;
 }
 
+// Only the signature and the IHDR chunk: enough to claim any size without its pixels.
+inline std::string make_png_header(std::uint32_t width, std::uint32_t height) {
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  std::string header;
+  put_u32_be(header, width);
+  put_u32_be(header, height);
+  header += std::string{8, 6, 0, 0, 0};
+  put_chunk(png, "IHDR", header);
+  return png;
+}
+
 // An 8-bit PNG: colour_type 6 (RGBA, 4 channels), 2 (RGB, 3) or 0 (grey, 1); pixels row-major.
 inline std::string make_png(std::uint32_t width, std::uint32_t height, int colour_type,
                             const std::vector<std::uint8_t>& pixels) {

@@ -233,7 +233,8 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   regions.reserve(input.regions.size());
   for (const Region& region : input.regions)
     regions.push_back(transformed(region, input.transform));
-  regions = clean_and_validate(std::move(regions), asset.source);
+  // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
+  if (!regions.empty()) regions = clean_and_validate(std::move(regions), asset.source);
   asset.regions = regions;
 
   // Tolerances are given in input units (or relative to R); the output is in

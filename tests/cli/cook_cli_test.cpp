@@ -1,0 +1,127 @@
+// `hullcook cook` on bad inputs: exit code 2, one clear line naming the file,
+// no output file.
+#include "png_writer.h"
+#include "run_command.h"
+
+#include "hullcook/core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace hullcook {
+namespace {
+
+namespace fs = std::filesystem;
+using test::make_png;
+using test::run_hullcook;
+
+class CookCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory = fs::temp_directory_path() /
+                ("hullcook_cook_cli_" +
+                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+  }
+  void TearDown() override { fs::remove_all(directory); }
+
+  fs::path write(const std::string& name, const std::string& bytes) {
+    fs::path path = directory / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  }
+
+  // Cooks input and expects a refusal that names it, with no output left
+  // behind.
+  void expect_bad_input(const fs::path& input, const std::string& problem,
+                        const std::string& extra = "") {
+    for (const char* extension : {".json", ".hcb", ".glb"}) {
+      fs::path output = directory / (std::string("out") + extension);
+      auto result = run_hullcook("cook " + input.string() + " -o " + output.string() + " " + extra);
+      EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+      EXPECT_NE(result.output.find(input.string()), std::string::npos) << result.output;
+      EXPECT_NE(result.output.find(problem), std::string::npos) << result.output;
+      EXPECT_FALSE(fs::exists(output));
+      EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    }
+    std::size_t left = std::distance(fs::directory_iterator(directory), fs::directory_iterator{});
+    EXPECT_EQ(left, 1u) << "temporary files were left behind";
+  }
+
+  fs::path directory;
+};
+
+std::string opaque_square_png() {
+  std::vector<std::uint8_t> pixels(16 * 16 * 4, 0);
+  for (int y = 4; y < 12; ++y)
+    for (int x = 4; x < 12; ++x) pixels[(y * 16 + x) * 4 + 3] = 255;
+  return make_png(16, 16, 6, pixels);
+}
+
+TEST_F(CookCli, TruncatedPng) {
+  std::string png = opaque_square_png();
+  expect_bad_input(write("truncated.png", png.substr(0, png.size() / 2)), "truncated.png");
+}
+
+TEST_F(CookCli, ZeroByZeroImage) {
+  expect_bad_input(write("empty.png", make_png(0, 0, 6, {})), "empty.png");
+}
+
+TEST_F(CookCli, HugeHeaderIsRefusedBeforeDecoding) {
+  expect_bad_input(write("huge.png", test::make_png_header(100000, 100000)), "huge.png");
+}
+
+TEST_F(CookCli, TextFileNamedPng) {
+  expect_bad_input(write("notes.png", "this is not an image\n"), "notes.png");
+}
+
+TEST_F(CookCli, NoAlphaWithoutColourKeyIsRefusedWithAHint) {
+  std::vector<std::uint8_t> rgb(8 * 8 * 3, 200);
+  expect_bad_input(write("rgb.png", make_png(8, 8, 2, rgb)), "--color-key");
+}
+
+TEST_F(CookCli, NoAlphaWithColourKeyIsTraced) {
+  std::vector<std::uint8_t> rgb(16 * 16 * 3, 0);
+  for (std::size_t i = 0; i < rgb.size(); i += 3) rgb[i] = rgb[i + 2] = 255;  // magenta
+  for (int y = 4; y < 12; ++y)
+    for (int x = 4; x < 12; ++x) rgb[(y * 16 + x) * 3] = rgb[(y * 16 + x) * 3 + 2] = 0;
+  fs::path input = write("keyed.png", make_png(16, 16, 2, rgb));
+  auto result = run_hullcook("cook " + input.string() + " --color-key '#ff00ff' -o " +
+                             (directory / "out.json").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(directory / "out.json"));
+}
+
+TEST_F(CookCli, FullyTransparentImageWarnsAndCooksAnEmptyAsset) {
+  fs::path input = write("clear.png", make_png(8, 8, 6, std::vector<std::uint8_t>(8 * 8 * 4, 0)));
+  auto result = run_hullcook("cook " + input.string() + " -o " + (directory / "out.json").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("warning"), std::string::npos) << result.output;
+  EXPECT_TRUE(fs::exists(directory / "out.json"));
+}
+
+TEST_F(CookCli, MissingInputIsUsageOrInputError) {
+  auto result = run_hullcook("cook " + (directory / "missing.png").string() + " -o " +
+                             (directory / "out.json").string());
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_FALSE(fs::exists(directory / "out.json"));
+}
+
+TEST_F(CookCli, UnwritableOutputIsExitCodeThree) {
+  fs::path input = write("square.png", opaque_square_png());
+  auto result = run_hullcook("cook " + input.string() + " -o " +
+                             (directory / "no/such/dir/out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::output_failed)) << result.output;
+}
+
+TEST_F(CookCli, UnknownOutputExtensionIsUsageError) {
+  fs::path input = write("square.png", opaque_square_png());
+  auto result = run_hullcook("cook " + input.string() + " -o " + (directory / "out.txt").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+}
+
+}  // namespace
+}  // namespace hullcook

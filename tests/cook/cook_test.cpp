@@ -1,0 +1,129 @@
+// cook() end to end on the sample sprites: the contract of issue 4 after the
+// engine limits, determinism across thread counts, levels of detail and the
+// shape budget.
+#include "contract.h"
+
+#include "hullcook/cook/bundle_writer.h"
+#include "hullcook/cook/cook.h"
+#include "hullcook/cook/debug_json.h"
+#include "hullcook/cook/gltf_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace hullcook {
+namespace {
+
+const std::filesystem::path kSprites =
+    std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+
+std::vector<std::filesystem::path> all_sprites() {
+  std::vector<std::filesystem::path> sprites;
+  for (const auto& entry : std::filesystem::directory_iterator(kSprites)) {
+    if (entry.path().extension() == ".png") sprites.push_back(entry.path());
+  }
+  std::sort(sprites.begin(), sprites.end());
+  return sprites;
+}
+
+class SpriteContract : public ::testing::TestWithParam<double> {};
+
+// Issue 4: on every sprite, for τ in {0.5, 2, 8} px, every hull is engine-ready
+// and the components and hulls keep the error bound.
+TEST_P(SpriteContract, EverySpriteKeepsTheContractAfterEngineLimits) {
+  Settings settings;
+  settings.tau = Tolerance{GetParam(), false};
+  CookResult result = cook({kSprites}, settings);
+  ASSERT_EQ(result.assets.size(), all_sprites().size());
+  EngineLimits limits{settings.max_verts, kDefaultWeld};
+  for (const CookedAsset& asset : result.assets) {
+    SCOPED_TRACE(asset.name);
+    EXPECT_DOUBLE_EQ(asset.tau, GetParam());
+    for (const std::string& warning : asset.warnings) {
+      EXPECT_EQ(warning.find("too small"), std::string::npos) << warning;
+    }
+    test::expect_cooked_contract(asset, asset.tau, limits);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Tau, SpriteContract, ::testing::Values(0.5, 2.0, 8.0));
+
+// Timings are the only fields that may differ between two runs.
+std::vector<CookedAsset> without_timings(std::vector<CookedAsset> assets) {
+  for (CookedAsset& asset : assets) {
+    asset.stats.decompose_ms = asset.stats.trace_ms = asset.stats.total_ms = 0;
+  }
+  return assets;
+}
+
+TEST(Cook, OutputDoesNotDependOnThreadCount) {
+  Settings one;
+  one.threads = 1;
+  Settings two = one;
+  two.threads = 2;
+  std::vector<std::filesystem::path> inputs{kSprites};
+  CookResult first = cook(inputs, one), second = cook(inputs, two);
+  EXPECT_EQ(write_bundle(first.assets), write_bundle(second.assets));
+  EXPECT_EQ(write_gltf(first.assets, GltfOptions{true, true}),
+            write_gltf(second.assets, GltfOptions{true, true}));
+  EXPECT_EQ(debug_json(without_timings(first.assets)), debug_json(without_timings(second.assets)));
+}
+
+TEST(Cook, LevelsOfDetailAreOrderedFinestFirstAndCoarserHaveFewerHulls) {
+  Settings settings;
+  settings.tau = Tolerance{0.5, false};
+  settings.lods = {Tolerance{8, false}, Tolerance{2, false}};
+  CookResult result =
+      cook({kSprites / "pingus__groundpieces__ground__foliage__oak1.png"}, settings);
+  ASSERT_EQ(result.assets.size(), 1u);
+  const CookedAsset& asset = result.assets[0];
+  ASSERT_EQ(asset.levels.size(), 3u);
+  EXPECT_DOUBLE_EQ(asset.levels[0].tau, 0.5);
+  EXPECT_DOUBLE_EQ(asset.levels[1].tau, 2.0);
+  EXPECT_DOUBLE_EQ(asset.levels[2].tau, 8.0);
+  EXPECT_GE(asset.levels[0].hulls.size(), asset.levels[1].hulls.size());
+  EXPECT_GE(asset.levels[1].hulls.size(), asset.levels[2].hulls.size());
+  EngineLimits limits{settings.max_verts, kDefaultWeld};
+  for (const CookedLevel& level : asset.levels) {
+    for (const Ring& hull : level.hulls) test::expect_engine_ready(hull, limits, "level hull");
+  }
+}
+
+TEST(Cook, ShapeBudgetGivesTheFinestLevelWithinIt) {
+  Settings settings;
+  settings.tau = Tolerance{0.5, false};
+  settings.max_pieces = 4;
+  settings.max_verts = 0;
+  auto sprite = kSprites / "pingus__groundpieces__ground__foliage__oak1.png";
+  CookResult budget = cook({sprite}, settings);
+  ASSERT_EQ(budget.assets.size(), 1u);
+  EXPECT_LE(budget.assets[0].stats.pieces, 4u);
+  EXPECT_GT(budget.assets[0].tau, 0.5);
+  // Any finer tolerance would need more pieces.
+  Settings finer = settings;
+  finer.max_pieces = 0;
+  finer.tau = Tolerance{budget.assets[0].tau * 0.99, false};
+  EXPECT_GT(cook({sprite}, finer).assets[0].stats.pieces, 4u);
+}
+
+TEST(Cook, PixelsToWorldMapsPivotScaleAndFlip) {
+  Settings settings;
+  settings.pixels_per_unit = 32;
+  auto sprite = kSprites / "pingus__groundpieces__ground__snow__iceblock1.png";
+  CookedAsset asset = cook({sprite}, settings).assets.at(0);
+  EXPECT_DOUBLE_EQ(asset.transform.scale, 1.0 / 32);
+  EXPECT_DOUBLE_EQ(asset.transform.origin.x, 0.5 * asset.image_width);
+  EXPECT_DOUBLE_EQ(asset.transform.origin.y, 0.5 * asset.image_height);
+  EXPECT_TRUE(asset.transform.flip_y);
+  EXPECT_DOUBLE_EQ(asset.tau, 2.0 / 32);
+  for (const Region& region : asset.regions) {
+    for (Vec2 v : region.outer) {
+      EXPECT_LE(std::abs(v.x), 0.5 * asset.image_width / 32 + 1e-9);
+      EXPECT_LE(std::abs(v.y), 0.5 * asset.image_height / 32 + 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
