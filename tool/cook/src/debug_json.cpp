@@ -126,7 +126,39 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
       json.number(piece.concavity);
       out += '}';
     }
-    out += "],\n   \"stats\": {\"pieces\": ";
+    out += "],\n   \"levels\": [";
+    for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+      const CookedLevel& level = asset.levels[l];
+      out += l ? ",\n    {\"tau\": " : "\n    {\"tau\": ";
+      json.number(level.tau);
+      out += ", \"hulls\": [";
+      for (std::size_t h = 0; h < level.hulls.size(); ++h) {
+        if (h) out += ", ";
+        json.ring(level.hulls[h]);
+      }
+      out += "]}";
+    }
+    out += "]";
+    if (asset.image_width > 0) {
+      out += ",\n   \"image\": {\"width\": ";
+      json.integer(static_cast<std::size_t>(asset.image_width));
+      out += ", \"height\": ";
+      json.integer(static_cast<std::size_t>(asset.image_height));
+      out += ", \"pixels_per_unit\": ";
+      json.number(asset.pixels_per_unit);
+      out += ", \"pivot\": ";
+      json.point(asset.pivot);
+      out += "}";
+    }
+    if (!asset.warnings.empty()) {
+      out += ",\n   \"warnings\": [";
+      for (std::size_t w = 0; w < asset.warnings.size(); ++w) {
+        if (w) out += ", ";
+        json.string(asset.warnings[w]);
+      }
+      out += "]";
+    }
+    out += ",\n   \"stats\": {\"pieces\": ";
     json.integer(asset.stats.pieces);
     out += ", \"max_concavity\": ";
     json.number(asset.stats.max_concavity);
@@ -134,6 +166,10 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
     json.number(asset.stats.convexity);
     out += ", \"decompose_ms\": ";
     json.number(asset.stats.decompose_ms);
+    out += ", \"traced_vertices\": ";
+    json.integer(asset.stats.traced_vertices);
+    out += ", \"trace_ms\": ";
+    json.number(asset.stats.trace_ms);
     out += "}}";
   }
   out += "\n ]}\n";
