@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+
+#include "hullcook/core/error.h"
 
 namespace hullcook {
 namespace {
@@ -121,6 +124,58 @@ TEST(Cook, PixelsToWorldMapsPivotScaleAndFlip) {
     for (Vec2 v : region.outer) {
       EXPECT_LE(std::abs(v.x), 0.5 * asset.image_width / 32 + 1e-9);
       EXPECT_LE(std::abs(v.y), 0.5 * asset.image_height / 32 + 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
+
+namespace hullcook {
+namespace {
+
+class Sidecar : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory = std::filesystem::temp_directory_path() / "hullcook_sidecar_test";
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    sprite = directory / "ice.png";
+    std::filesystem::copy_file(kSprites / "pingus__groundpieces__ground__snow__iceblock1.png",
+                               sprite);
+  }
+  void TearDown() override { std::filesystem::remove_all(directory); }
+  void write_sidecar(const std::string& text) {
+    std::ofstream(directory / "ice.physics.json") << text;
+  }
+  std::filesystem::path directory, sprite;
+};
+
+TEST_F(Sidecar, OverridesTheCommandLineFieldByField) {
+  write_sidecar(R"({"density": 2.5, "sensor": true, "mask": 6})");
+  Settings settings;
+  settings.physics = PhysicsProperties{};
+  settings.physics->friction = 0.7f;
+  CookedAsset asset = cook({sprite}, settings).assets.at(0);
+  ASSERT_TRUE(asset.physics);
+  EXPECT_FLOAT_EQ(asset.physics->density, 2.5f);
+  EXPECT_FLOAT_EQ(asset.physics->friction, 0.7f);
+  EXPECT_TRUE(asset.physics->sensor);
+  EXPECT_EQ(asset.physics->mask_bits, 6);
+}
+
+TEST_F(Sidecar, WithoutSidecarOrOptionsThereAreNoProperties) {
+  EXPECT_FALSE(cook({sprite}, Settings{}).assets.at(0).physics);
+}
+
+TEST_F(Sidecar, MalformedSidecarIsBadInputNamingIt) {
+  for (const char* text : {"{not json", R"({"densty": 1})", R"({"mask": 70000})", "[1]"}) {
+    write_sidecar(text);
+    try {
+      cook({sprite}, Settings{});
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("ice.physics.json"), std::string::npos) << e.what();
     }
   }
 }

@@ -10,11 +10,14 @@
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <set>
@@ -211,6 +214,51 @@ PreparedInput prepare_polygons(const InputFile& file, const Settings& settings) 
   return prepared;
 }
 
+// Physics properties for one asset: the command line's, overridden field by field by a sidecar
+// file NAME.physics.json beside the input, e.g. {"density": 2, "sensor": true}.
+std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
+                                             const Settings& settings) {
+  std::filesystem::path sidecar = input;
+  sidecar.replace_extension(".physics.json");
+  if (!std::filesystem::exists(sidecar)) return settings.physics;
+  PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
+  std::ifstream stream(sidecar);
+  nlohmann::json json = nlohmann::json::parse(stream, nullptr, false);
+  if (json.is_discarded() || !json.is_object()) {
+    throw InputError(sidecar.string() + ": not a JSON object of physics properties");
+  }
+  for (const auto& [key, value] : json.items()) {
+    auto number = [&, &key = key, &value = value]() {
+      if (!value.is_number())
+        throw InputError(sidecar.string() + ": '" + key + "' must be a number");
+      return value.get<double>();
+    };
+    auto bits = [&, &key = key, &value = value]() {
+      if (!value.is_number_unsigned() || value.get<std::uint64_t>() > 0xFFFF) {
+        throw InputError(sidecar.string() + ": '" + key + "' must be an integer in 0..65535");
+      }
+      return static_cast<std::uint16_t>(value.get<std::uint64_t>());
+    };
+    if (key == "density") {
+      physics.density = static_cast<float>(number());
+    } else if (key == "friction") {
+      physics.friction = static_cast<float>(number());
+    } else if (key == "restitution") {
+      physics.restitution = static_cast<float>(number());
+    } else if (key == "sensor" && value.is_boolean()) {
+      physics.sensor = value.get<bool>();
+    } else if (key == "category") {
+      physics.category_bits = bits();
+    } else if (key == "mask") {
+      physics.mask_bits = bits();
+    } else {
+      throw InputError(sidecar.string() + ": unknown or mistyped property '" + key +
+                       "' (density, friction, restitution, sensor, category, mask)");
+    }
+  }
+  return physics;
+}
+
 CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   auto start = Clock::now();
   PreparedInput input =
@@ -224,7 +272,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   asset.pivot = Vec2{settings.pivot_u, settings.pivot_v};
   asset.transform = input.transform;
   asset.measure = settings.measure;
-  asset.physics = settings.physics;
+  asset.physics = physics_for(file.path, settings);
   asset.warnings = std::move(input.warnings);
   asset.stats.traced_vertices = input.traced_vertices;
   asset.stats.trace_ms = input.trace_ms;
