@@ -3,6 +3,7 @@
 #include "inspect.h"
 
 #include "hullcook/cook/asset.h"
+#include "hullcook/cook/debug_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -302,55 +303,18 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
   }
 }
 
-json ring_json(const Ring& ring) {
-  json points = json::array();
-  for (const Vec2& v : ring) points.push_back({v.x, v.y});
-  return points;
-}
-
-// The debug JSON of issue 3. A glTF holds hulls only: no regions, components or concavities, so
-// `regions` is empty and each piece has only its `hull`; `levels`, the image and physics fields
-// extend the schema.
-json debug_json(const GltfContents& contents) {
-  json assets = json::array();
-  for (const CookedAsset& asset : contents.assets) {
-    json pieces = json::array();
-    json levels = json::array();
-    for (std::size_t l = 0; l < asset.levels.size(); ++l) {
-      json hulls = json::array();
-      for (const Ring& hull : asset.levels[l].hulls) {
-        hulls.push_back(ring_json(hull));
-        if (l == 0) pieces.push_back({{"hull", ring_json(hull)}});
-      }
-      levels.push_back({{"tau", asset.levels[l].tau}, {"hulls", std::move(hulls)}});
+// A glTF holds hulls only: each piece of the debug JSON gets its hull as its component too
+// (regions and concavities are not stored), and the levels carry every level's hulls.
+std::vector<CookedAsset> with_hull_pieces(std::vector<CookedAsset> assets) {
+  for (CookedAsset& asset : assets) {
+    asset.pieces.clear();
+    if (asset.levels.empty()) continue;
+    for (const Ring& hull : asset.levels.front().hulls) {
+      asset.pieces.push_back(CookedPiece{Region{hull, {}}, hull, 0.0});
     }
-    json entry = {
-        {"name", asset.name},
-        {"source", asset.source},
-        {"transform",
-         {{"scale", asset.transform.scale},
-          {"origin", {asset.transform.origin.x, asset.transform.origin.y}},
-          {"flip_y", asset.transform.flip_y}}},
-        {"tau", asset.tau},
-        {"measure", asset.measure},
-        {"regions", json::array()},
-        {"pieces", pieces},
-        {"levels", std::move(levels)},
-        {"image_size", {asset.image_width, asset.image_height}},
-        {"pixels_per_unit", asset.pixels_per_unit},
-        {"pivot", {asset.pivot.x, asset.pivot.y}},
-        {"stats", {{"pieces", pieces.size()}}},
-    };
-    if (asset.physics) {
-      const PhysicsProperties& p = *asset.physics;
-      entry["physics"] = {
-          {"density", float_number(p.density)},         {"friction", float_number(p.friction)},
-          {"restitution", float_number(p.restitution)}, {"sensor", p.sensor},
-          {"category_bits", p.category_bits},           {"mask_bits", p.mask_bits}};
-    }
-    assets.push_back(std::move(entry));
+    asset.stats.pieces = asset.pieces.size();
   }
-  return {{"hullcook", 1}, {"assets", std::move(assets)}};
+  return assets;
 }
 
 }  // namespace
@@ -368,7 +332,7 @@ int inspect_gltf(const std::filesystem::path& path, bool json_output) {
     return 2;
   }
   if (json_output) {
-    std::cout << debug_json(contents).dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+    std::cout << debug_json(with_hull_pieces(std::move(contents.assets)));
   } else {
     print_text(path, contents);
   }

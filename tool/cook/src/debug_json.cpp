@@ -150,6 +150,22 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
       json.point(asset.pivot);
       out += "}";
     }
+    if (asset.physics) {
+      const PhysicsProperties& physics = *asset.physics;
+      out += ",\n   \"physics\": {\"density\": ";
+      json.number(physics.density);
+      out += ", \"friction\": ";
+      json.number(physics.friction);
+      out += ", \"restitution\": ";
+      json.number(physics.restitution);
+      out += ", \"sensor\": ";
+      out += physics.sensor ? "true" : "false";
+      out += ", \"category_bits\": ";
+      json.integer(physics.category_bits);
+      out += ", \"mask_bits\": ";
+      json.integer(physics.mask_bits);
+      out += "}";
+    }
     if (!asset.warnings.empty()) {
       out += ",\n   \"warnings\": [";
       for (std::size_t w = 0; w < asset.warnings.size(); ++w) {
