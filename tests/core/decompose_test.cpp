@@ -123,7 +123,9 @@ void expect_contract(const Region& input, const std::vector<Piece>& pieces, doub
     EXPECT_NEAR(measured, piece.concavity, 1e-9 * (1 + measured));
     if (piece.component.holes.empty()) {
       const double sl = brute_sl_concavity(piece.component.outer);
-      if (measure == Measure::sl) EXPECT_NEAR(sl, measured, 1e-9 * (1 + sl));
+      if (measure == Measure::sl) {
+        EXPECT_NEAR(sl, measured, 1e-9 * (1 + sl));
+      }
       EXPECT_LE(sl, tau * (1 + 1e-12) + 1e-12);  // every measure is at least SL
     }
     if (tau == 0.0) {
@@ -198,7 +200,9 @@ void check_tree(const Region& region, const DecompositionTree& tree, Measure mea
       return tree.piece_count_at(t) == within.size();
     });
     ASSERT_NE(level, taus.end());
-    if (level != taus.begin()) EXPECT_GT(tree.piece_count_at(*(level - 1)), budget);
+    if (level != taus.begin()) {
+      EXPECT_GT(tree.piece_count_at(*(level - 1)), budget);
+    }
   }
 }
 
