@@ -3,6 +3,7 @@
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/predicates.h"
+#include "predicates_inline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,8 @@ Ring remove_degenerate_vertices(const Ring& ring) {
   Ring out;
   out.reserve(ring.size());
   for (Vec2 p : ring) {
-    while (out.size() >= 2 && orientation(out[out.size() - 2], out.back(), p) == 0) out.pop_back();
+    while (out.size() >= 2 && detail::fast_orientation(out[out.size() - 2], out.back(), p) == 0)
+      out.pop_back();
     if (!out.empty() && out.back() == p) continue;
     out.push_back(p);
   }
@@ -27,10 +29,10 @@ Ring remove_degenerate_vertices(const Ring& ring) {
     if (out.back() == out.front()) {
       out.pop_back();
       changed = true;
-    } else if (orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
+    } else if (detail::fast_orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
       out.pop_back();
       changed = true;
-    } else if (orientation(out.back(), out[0], out[1]) == 0) {
+    } else if (detail::fast_orientation(out.back(), out[0], out[1]) == 0) {
       out.erase(out.begin());
       changed = true;
     }

@@ -4,6 +4,7 @@
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/predicates.h"
 #include "pocket_paths.h"
+#include "predicates_inline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +55,7 @@ struct OuterConcavity {
 
 bool is_notch(const Ring& ring, std::size_t i) {
   const std::size_t n = ring.size();
-  return orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) < 0;
+  return detail::fast_orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) < 0;
 }
 
 // Shortest paths of pockets already measured in an ancestor. A pocket is its chain from β- to β+;
@@ -89,7 +90,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   for (std::size_t k = 0; k < hull.size(); ++k) {
     const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
     for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
-      if (orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
+      if (detail::fast_orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
     }
   }
   std::size_t start = 0;
@@ -109,7 +110,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     double sl_max = 0.0;
     bool hazard = false;
     for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
-      const double d = std::abs(orient2d(bs, bt, ring[i])) / length;
+      const double d = std::abs(detail::fast_orient2d(bs, bt, ring[i])) / length;
       result.vertex[i] = d;
       sl_max = std::max(sl_max, d);
     }
@@ -283,10 +284,12 @@ class RegionView {
   // The open segment from v toward target leaves v into the interior (O'Rourke's InCone).
   bool in_cone(VertexRef v, Vec2 target) const {
     const Vec2 a = at(v), before = prev(v), after = next(v);
-    if (orientation(a, after, before) >= 0) {
-      return orientation(a, target, before) > 0 && orientation(target, a, after) > 0;
+    if (detail::fast_orientation(a, after, before) >= 0) {
+      return detail::fast_orientation(a, target, before) > 0 &&
+             detail::fast_orientation(target, a, after) > 0;
     }
-    return !(orientation(a, target, after) >= 0 && orientation(target, a, before) >= 0);
+    return !(detail::fast_orientation(a, target, after) >= 0 &&
+             detail::fast_orientation(target, a, before) >= 0);
   }
 
   // u-v is a diagonal: inside at both ends and meeting no other edge, not even at a vertex.
@@ -420,7 +423,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     if (i == r || i == (r + 1) % n || i == (r + n - 1) % n) continue;
     const Vec2 x = ring[i];
     const double length = distance(pr, x);
-    if (orientation(a, pr, x) >= 0 && orientation(x, pr, b) >= 0) {
+    if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
       resolving.push_back({(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length), i});
     } else {
       const Vec2 d = (x - pr) / length;

@@ -1,10 +1,12 @@
 #include "hullcook/core/geometry.h"
 
 #include "hullcook/core/predicates.h"
+#include "predicates_inline.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 
 namespace hullcook {
@@ -28,9 +30,55 @@ double region_area(const Region& region) {
   return area;
 }
 
+namespace {
+
+// Akl-Toussaint: the extreme points in eight directions span a convex polygon inside the hull; a
+// point strictly inside it is neither a hull vertex nor on the hull's boundary, so dropping it
+// before the sort leaves the result unchanged.
+std::vector<std::size_t> hull_candidates(const Ring& points) {
+  std::vector<std::size_t> candidates;
+  candidates.reserve(points.size());
+  constexpr std::size_t kDirections = 8;
+  // Counter-clockwise from the lowest x: -x, -x-y, -y, x-y, x, x+y, y, y-x.
+  constexpr double kDirection[kDirections][2] = {{-1, 0}, {-1, -1}, {0, -1}, {1, -1},
+                                                 {1, 0},  {1, 1},   {0, 1},  {-1, 1}};
+  std::size_t extreme[kDirections] = {};
+  double best[kDirections];
+  for (std::size_t d = 0; d < kDirections; ++d) {
+    best[d] = -std::numeric_limits<double>::infinity();
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t d = 0; d < kDirections; ++d) {
+      const double value = kDirection[d][0] * points[i].x + kDirection[d][1] * points[i].y;
+      if (value > best[d]) best[d] = value, extreme[d] = i;
+    }
+  }
+  Ring inner;
+  for (std::size_t d = 0; d < kDirections; ++d) {
+    const Vec2 p = points[extreme[d]];
+    if (inner.empty() || (p != inner.back() && p != inner.front())) inner.push_back(p);
+  }
+  const std::size_t sides = inner.size();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    bool strictly_inside = sides >= 3;
+    for (std::size_t k = 0; k < sides && strictly_inside; ++k) {
+      strictly_inside = detail::fast_orient2d(inner[k], inner[(k + 1) % sides], points[i]) > 0.0;
+    }
+    if (!strictly_inside) candidates.push_back(i);
+  }
+  return candidates;
+}
+
+}  // namespace
+
 std::vector<std::size_t> convex_hull_indices(const Ring& points) {
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> order;
+  if (points.size() >= 64) {
+    order = hull_candidates(points);
+  } else {
+    order.resize(points.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+  }
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (points[a].x != points[b].x) return points[a].x < points[b].x;
     if (points[a].y != points[b].y) return points[a].y < points[b].y;
@@ -43,14 +91,15 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points) {
   std::vector<std::size_t> hull(2 * order.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < order.size(); ++i) {
-    while (k >= 2 && orientation(points[hull[k - 2]], points[hull[k - 1]], points[order[i]]) <= 0) {
+    while (k >= 2 && detail::fast_orientation(points[hull[k - 2]], points[hull[k - 1]],
+                                              points[order[i]]) <= 0) {
       --k;
     }
     hull[k++] = order[i];
   }
   for (std::size_t i = order.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower &&
-           orientation(points[hull[k - 2]], points[hull[k - 1]], points[order[i]]) <= 0) {
+    while (k >= lower && detail::fast_orientation(points[hull[k - 2]], points[hull[k - 1]],
+                                                  points[order[i]]) <= 0) {
       --k;
     }
     hull[k++] = order[i];
@@ -74,7 +123,7 @@ Location locate_point(const Ring& ring, Vec2 p) {
     if (on_segment(a, b, p)) return Location::boundary;
     // Half-open rule on y; the side test is exact.
     if ((a.y > p.y) != (b.y > p.y)) {
-      const int side = orientation(a, b, p);
+      const int side = detail::fast_orientation(a, b, p);
       if ((b.y > a.y) ? side > 0 : side < 0) inside = !inside;
     }
   }

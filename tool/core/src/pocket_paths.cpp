@@ -1,6 +1,7 @@
 #include "pocket_paths.h"
 
 #include "hullcook/core/predicates.h"
+#include "predicates_inline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,11 +75,33 @@ class ReflexGrid {
 
 }  // namespace
 
-std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon,
+                                            std::vector<std::array<int, 3>>* neighbours) {
   const int n = static_cast<int>(polygon.size());
   std::vector<std::array<int, 3>> triangles;
+  if (neighbours) neighbours->clear();
   if (n < 3) return triangles;
   triangles.reserve(static_cast<std::size_t>(n - 2));
+  // The triangle on the inner side of the remaining boundary's edge i -> next[i] (-1: none yet).
+  // A clipped ear (a, i, c) meets its neighbours across the edges a -> i and i -> c; its edge
+  // c -> a (index 2) becomes the boundary edge a -> c.
+  std::vector<int> owner;
+  if (neighbours) {
+    owner.assign(static_cast<std::size_t>(n), -1);
+    neighbours->reserve(static_cast<std::size_t>(n - 2));
+  }
+  auto add_triangle = [&](int a, int b, int c, bool closes) {
+    const int t = static_cast<int>(triangles.size());
+    triangles.push_back({a, b, c});
+    if (!neighbours) return;
+    const int across[3] = {owner[static_cast<std::size_t>(a)], owner[static_cast<std::size_t>(b)],
+                           closes ? owner[static_cast<std::size_t>(c)] : -1};
+    neighbours->push_back({across[0], across[1], across[2]});
+    for (int e = 0; e < 3; ++e) {
+      if (across[e] >= 0) (*neighbours)[static_cast<std::size_t>(across[e])][2] = t;
+    }
+    if (!closes) owner[static_cast<std::size_t>(a)] = t;
+  };
   std::vector<int> prev(static_cast<std::size_t>(n)), next(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     prev[static_cast<std::size_t>(i)] = (i + n - 1) % n;
@@ -90,7 +113,7 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
   std::vector<char> reflex(static_cast<std::size_t>(n), 0), removed(static_cast<std::size_t>(n), 0);
   std::vector<int> reflex_list;
   auto update_reflex = [&](int i) {
-    const bool is_reflex = orientation(at(P(i)), at(i), at(N(i))) <= 0;
+    const bool is_reflex = detail::fast_orientation(at(P(i)), at(i), at(N(i))) <= 0;
     if (is_reflex && !reflex[static_cast<std::size_t>(i)]) reflex_list.push_back(i);
     reflex[static_cast<std::size_t>(i)] = is_reflex;
   };
@@ -101,7 +124,7 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
   const ReflexGrid grid(polygon, reflex_list);
   auto is_ear = [&](int i) {
     const int a = P(i), c = N(i);
-    if (orientation(at(a), at(i), at(c)) <= 0) return false;
+    if (detail::fast_orientation(at(a), at(i), at(c)) <= 0) return false;
     const Vec2 pa = at(a), pb = at(i), pc = at(c);
     const double min_x = std::min({pa.x, pb.x, pc.x}), max_x = std::max({pa.x, pb.x, pc.x});
     const double min_y = std::min({pa.y, pb.y, pc.y}), max_y = std::max({pa.y, pb.y, pc.y});
@@ -111,8 +134,8 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
       if (r == a || r == i || r == c) return false;
       const Vec2 p = at(r);
       if (p.x < min_x || p.x > max_x || p.y < min_y || p.y > max_y) return false;
-      return orientation(pa, pb, p) >= 0 && orientation(pb, pc, p) >= 0 &&
-             orientation(pc, pa, p) >= 0;
+      return detail::fast_orientation(pa, pb, p) >= 0 && detail::fast_orientation(pb, pc, p) >= 0 &&
+             detail::fast_orientation(pc, pa, p) >= 0;
     });
   };
   int remaining = n;
@@ -121,10 +144,11 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
   while (remaining > 3) {
     const bool degenerate_fallback = since_last_ear > remaining;
     if (is_ear(current) ||
-        (degenerate_fallback && orientation(at(P(current)), at(current), at(N(current))) >= 0) ||
+        (degenerate_fallback &&
+         detail::fast_orientation(at(P(current)), at(current), at(N(current))) >= 0) ||
         since_last_ear > 2 * remaining) {
       const int a = P(current), c = N(current);
-      triangles.push_back({a, current, c});
+      add_triangle(a, current, c, false);
       removed[static_cast<std::size_t>(current)] = 1;
       next[static_cast<std::size_t>(a)] = c;
       prev[static_cast<std::size_t>(c)] = a;
@@ -138,7 +162,7 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon) {
       ++since_last_ear;
     }
   }
-  triangles.push_back({P(current), current, N(current)});
+  add_triangle(P(current), current, N(current), true);
   return triangles;
 }
 
@@ -154,33 +178,29 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
 
   // The pocket polygon q[0..m] runs clockwise; triangulate it reversed (counter-clockwise).
   std::vector<Vec2> ccw(q.rbegin(), q.rend());
-  std::vector<std::array<int, 3>> triangles = triangulate(ccw);
+  std::vector<std::array<int, 3>> across;
+  std::vector<std::array<int, 3>> triangles = triangulate(ccw, &across);
   for (auto& triangle : triangles) {
     for (int& v : triangle) v = m - v;
   }
-  // Adjacency through shared edges.
-  const std::size_t count = triangles.size();
-  std::vector<std::pair<long long, int>> edge_keys;
-  edge_keys.reserve(3 * count);
-  auto key = [&](int u, int v) {
-    if (u > v) std::swap(u, v);
-    return static_cast<long long>(u) * (m + 1) + v;
-  };
-  for (std::size_t i = 0; i < count; ++i) {
-    for (int e = 0; e < 3; ++e) {
-      edge_keys.emplace_back(key(triangles[i][e], triangles[i][(e + 1) % 3]), static_cast<int>(i));
-    }
-  }
-  std::sort(edge_keys.begin(), edge_keys.end());
   auto neighbour = [&](int triangle, int u, int v) {
-    const long long k = key(u, v);
-    auto it = std::lower_bound(edge_keys.begin(), edge_keys.end(), std::pair(k, -1));
-    for (; it != edge_keys.end() && it->first == k; ++it) {
-      if (it->second != triangle) return it->second;
+    const auto& tri = triangles[static_cast<std::size_t>(triangle)];
+    for (int e = 0; e < 3; ++e) {
+      const int x = tri[static_cast<std::size_t>(e)],
+                y = tri[static_cast<std::size_t>((e + 1) % 3)];
+      if ((x == u && y == v) || (x == v && y == u)) {
+        return across[static_cast<std::size_t>(triangle)][static_cast<std::size_t>(e)];
+      }
     }
     return -1;
   };
-  const int root = neighbour(-1, 0, m);
+  int root = -1;
+  for (std::size_t i = 0; i < triangles.size() && root < 0; ++i) {
+    const auto& tri = triangles[i];
+    const bool has_s = tri[0] == 0 || tri[1] == 0 || tri[2] == 0;
+    const bool has_t = tri[0] == m || tri[1] == m || tri[2] == m;
+    if (has_s && has_t) root = static_cast<int>(i);
+  }
   if (root < 0) return distance;
 
   constexpr int kInfinity = -1;  // the bridge seen as a source at infinity below it
@@ -191,7 +211,7 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
       const Vec2 d = point(via) - w;
       return d.x * along.x + d.y * along.y;
     }
-    return orient2d(point(from), point(via), w);
+    return detail::fast_orient2d(point(from), point(via), w);
   };
 
   struct Task {
