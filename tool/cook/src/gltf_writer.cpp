@@ -128,6 +128,13 @@ void check_finite(const CookedAsset& asset) {
       for (const Vec2& vertex : hull) {
         require_finite(vertex.x, asset.name, "a hull vertex");
         require_finite(vertex.y, asset.name, "a hull vertex");
+        // Converting a double beyond the float range is undefined behaviour: refuse it first.
+        constexpr double kFloatMax = std::numeric_limits<float>::max();
+        if (std::abs(vertex.x) > kFloatMax || std::abs(vertex.y) > kFloatMax) {
+          throw OutputError("asset " + asset.name + ": hull coordinate " +
+                            std::to_string(std::max(std::abs(vertex.x), std::abs(vertex.y))) +
+                            " does not fit a 32-bit float");
+        }
       }
     }
   }
