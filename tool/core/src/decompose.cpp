@@ -82,7 +82,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   const std::size_t n = ring.size();
   OuterConcavity result;
   result.vertex.assign(n, 0.0);
-  std::vector<std::size_t> hull = convex_hull_indices(ring);
+  std::vector<std::size_t> hull = simple_polygon_hull_indices(ring);
   if (hull.size() < 3) return result;
   std::vector<char> on_hull(n, 0);
   for (std::size_t h : hull) on_hull[h] = 1;
@@ -503,7 +503,11 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
 }
 
 Piece make_piece(const Region& component, double concavity) {
-  return Piece{component, convex_hull(component.outer), concavity};
+  Ring hull;
+  for (std::size_t index : simple_polygon_hull_indices(component.outer)) {
+    hull.push_back(component.outer[index]);
+  }
+  return Piece{component, std::move(hull), concavity};
 }
 
 }  // namespace

@@ -108,6 +108,74 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points) {
   return hull;
 }
 
+std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 4) return convex_hull_indices(ring);
+  // Start at the lowest-x (then lowest-y) vertex: a hull vertex, and where the result starts.
+  std::size_t first = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (ring[i].x < ring[first].x || (ring[i].x == ring[first].x && ring[i].y < ring[first].y)) {
+      first = i;
+    }
+  }
+  auto vertex = [&](std::size_t k) { return (first + k) % n; };
+  auto point = [&](std::size_t index) { return ring[index]; };
+  const int start_turn =
+      detail::fast_orientation(ring[vertex(0)], ring[vertex(1)], ring[vertex(2)]);
+  if (start_turn == 0) return convex_hull_indices(ring);
+  // The deque holds the hull of the chain so far, counter-clockwise from bottom to top, with the
+  // last added vertex at both ends.
+  std::vector<std::size_t> deque(2 * n + 1);
+  std::size_t bottom = n, top = n + 3;
+  deque[bottom] = deque[top] = vertex(2);
+  deque[bottom + 1] = start_turn > 0 ? vertex(0) : vertex(1);
+  deque[bottom + 2] = start_turn > 0 ? vertex(1) : vertex(0);
+  for (std::size_t k = 3; k < n; ++k) {
+    const std::size_t index = vertex(k);
+    const Vec2 p = ring[index];
+    if (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) > 0 &&
+        detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) > 0) {
+      continue;
+    }
+    while (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0) {
+      ++bottom;
+    }
+    deque[--bottom] = index;
+    while (detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) <= 0) --top;
+    deque[++top] = index;
+  }
+  // Drop any vertex left collinear (a chain may double back along a hull edge), keeping the
+  // counter-clockwise order.
+  std::vector<std::size_t> hull;
+  hull.reserve(top - bottom);
+  for (std::size_t k = bottom; k < top; ++k) {
+    const std::size_t index = deque[k];
+    while (hull.size() >= 2 && detail::fast_orientation(point(hull[hull.size() - 2]),
+                                                        point(hull.back()), point(index)) <= 0) {
+      hull.pop_back();
+    }
+    hull.push_back(index);
+  }
+  bool changed = true;
+  while (changed && hull.size() >= 3) {
+    changed = false;
+    const std::size_t h = hull.size();
+    if (detail::fast_orientation(point(hull[h - 2]), point(hull[h - 1]), point(hull[0])) <= 0) {
+      hull.pop_back();
+      changed = true;
+    } else if (detail::fast_orientation(point(hull[h - 1]), point(hull[0]), point(hull[1])) <= 0) {
+      hull.erase(hull.begin());
+      changed = true;
+    }
+  }
+  if (hull.size() < 3) return convex_hull_indices(ring);
+  const auto lowest = std::min_element(hull.begin(), hull.end(), [&](std::size_t a, std::size_t b) {
+    return ring[a].x != ring[b].x ? ring[a].x < ring[b].x : ring[a].y < ring[b].y;
+  });
+  std::rotate(hull.begin(), lowest, hull.end());
+  return hull;
+}
+
 Ring convex_hull(const Ring& points) {
   Ring hull;
   for (std::size_t index : convex_hull_indices(points)) hull.push_back(points[index]);

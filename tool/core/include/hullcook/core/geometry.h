@@ -22,6 +22,11 @@ Ring convex_hull(const Ring& points);
 // The same, as indices into points (an index is returned once even if its point repeats).
 std::vector<std::size_t> convex_hull_indices(const Ring& points);
 
+// The same indices as convex_hull_indices(ring) when ring is a simple polygon without repeated
+// vertices (either orientation), in linear time (Melkman's algorithm). Falls back to
+// convex_hull_indices when its first vertices are degenerate.
+std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring);
+
 enum class Location { outside, boundary, inside };
 
 // Where p lies with respect to the closed ring (either orientation), exactly.

@@ -1,0 +1,79 @@
+// The linear-time hull of simple polygons against the general point-set hull, on rings full of
+// collinear and doubling-back vertices (small integer grids) and on every sample's components.
+#include "hullcook/core/clean.h"
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/poly_io.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+namespace hullcook {
+namespace {
+
+void expect_same_hull(const Ring& ring, const std::string& what) {
+  SCOPED_TRACE(what);
+  ASSERT_EQ(simple_polygon_hull_indices(ring), convex_hull_indices(ring));
+  Ring reversed(ring.rbegin(), ring.rend());
+  ASSERT_EQ(simple_polygon_hull_indices(reversed), convex_hull_indices(reversed));
+  for (std::size_t shift : {std::size_t{1}, ring.size() / 2}) {
+    Ring rotated = ring;
+    std::rotate(rotated.begin(), rotated.begin() + static_cast<long>(shift), rotated.end());
+    ASSERT_EQ(simple_polygon_hull_indices(rotated), convex_hull_indices(rotated));
+  }
+}
+
+TEST(SimplePolygonHull, MatchesPointSetHullOnIntegerGridPolygons) {
+  std::mt19937 random(7);
+  int checked = 0;
+  for (int attempt = 0; attempt < 4000; ++attempt) {
+    const int grid = 3 + attempt % 9;
+    const int n = 4 + attempt % 23;
+    std::uniform_int_distribution<int> coordinate(0, grid);
+    // Star-shaped around the grid's centre (angles sorted), rounded to the grid: many collinear,
+    // repeated and backtracking vertices; clean_and_validate keeps the simple ones.
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(unit(random) * 2 * M_PI);
+    std::sort(angles.begin(), angles.end());
+    Region region;
+    for (double a : angles) {
+      const double r = grid * 0.5 * (0.2 + 0.8 * unit(random));
+      region.outer.push_back(
+          {std::round(grid * 0.5 + r * std::cos(a)), std::round(grid * 0.5 + r * std::sin(a))});
+    }
+    if (attempt % 3 == 0) {
+      // Arbitrary (mostly non-simple) orderings: only the simple ones survive.
+      for (Vec2& p : region.outer) p = {double(coordinate(random)), double(coordinate(random))};
+    }
+    std::vector<Region> cleaned;
+    try {
+      cleaned = clean_and_validate({region}, "random");
+    } catch (const std::exception&) {
+      continue;
+    }
+    expect_same_hull(cleaned[0].outer, "attempt " + std::to_string(attempt));
+    ++checked;
+  }
+  EXPECT_GT(checked, 500);
+}
+
+TEST(SimplePolygonHull, MatchesPointSetHullOnSampleComponents) {
+  const auto root = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/polygons";
+  for (const char* file : {"nazca/nazca_monkey.poly", "neuron/neuron.poly", "misc/mammoth.poly",
+                           "misc/BarbedThing.poly", "misc/texas.poly"}) {
+    const std::vector<Region> regions = read_poly_file(root / file);
+    for (const Region& region : regions) {
+      for (const Ring& hole : region.holes) expect_same_hull(hole, file);
+      const DecompositionTree tree = decompose(region, {0.0, Measure::sl, 0.1, 1.0});
+      for (const auto& node : tree.nodes()) expect_same_hull(node.component.outer, file);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
