@@ -298,26 +298,99 @@ class RegionView {
     if (a == b || !in_cone(u, b) || !in_cone(v, a)) return false;
     const double min_x = std::min(a.x, b.x), max_x = std::max(a.x, b.x);
     const double min_y = std::min(a.y, b.y), max_y = std::max(a.y, b.y);
-    for (int r = 0; r < ring_count(); ++r) {
+    auto blocks = [&](int r, std::size_t i) {
       const Ring& points = ring(r);
-      const std::size_t n = points.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t j = (i + 1) % n;
-        const Vec2 c = points[i], d = points[j];
-        if (std::max(c.x, d.x) < min_x || std::min(c.x, d.x) > max_x ||
-            std::max(c.y, d.y) < min_y || std::min(c.y, d.y) > max_y) {
-          continue;
+      const std::size_t j = i + 1 == points.size() ? 0 : i + 1;
+      const Vec2 c = points[i], d = points[j];
+      if (std::max(c.x, d.x) < min_x || std::min(c.x, d.x) > max_x || std::max(c.y, d.y) < min_y ||
+          std::min(c.y, d.y) > max_y) {
+        return false;
+      }
+      auto is = [&](VertexRef w, std::size_t k) { return w.ring == r && w.index == k; };
+      if (is(u, i) || is(u, j) || is(v, i) || is(v, j)) return false;
+      return segments_intersect(a, b, c, d);
+    };
+    if (!edge_start_.empty()) {
+      // Any edge meeting ab shares a cell with ab's box: cells are a monotone function of the
+      // coordinates, applied alike to both boxes.
+      const int x0 = cell_x(min_x), x1 = cell_x(max_x), y0 = cell_y(min_y), y1 = cell_y(max_y);
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+          const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
+          for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
+            const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
+            if (blocks(edge.ring, edge.index)) return false;
+          }
         }
-        auto is = [&](VertexRef w, std::size_t k) { return w.ring == r && w.index == k; };
-        if (is(u, i) || is(u, j) || is(v, i) || is(v, j)) continue;
-        if (segments_intersect(a, b, c, d)) return false;
+      }
+      return true;
+    }
+    for (int r = 0; r < ring_count(); ++r) {
+      for (std::size_t i = 0; i < ring(r).size(); ++i) {
+        if (blocks(r, i)) return false;
       }
     }
     return true;
   }
 
+  // Buckets every edge in a uniform grid, for views that test many diagonals.
+  void index_edges() {
+    std::size_t count = 0;
+    for (int r = 0; r < ring_count(); ++r) count += ring(r).size();
+    side_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(count))), 1, 512);
+    min_x_ = max_x_ = region_.outer[0].x;
+    min_y_ = max_y_ = region_.outer[0].y;
+    for (Vec2 p : region_.outer) {
+      min_x_ = std::min(min_x_, p.x), max_x_ = std::max(max_x_, p.x);
+      min_y_ = std::min(min_y_, p.y), max_y_ = std::max(max_y_, p.y);
+    }
+    scale_x_ = max_x_ > min_x_ ? side_ / (max_x_ - min_x_) : 0.0;
+    scale_y_ = max_y_ > min_y_ ? side_ / (max_y_ - min_y_) : 0.0;
+    edge_start_.assign(static_cast<std::size_t>(side_ * side_ + 1), 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int> fill;
+      if (pass == 1) {
+        for (std::size_t c = 1; c < edge_start_.size(); ++c) edge_start_[c] += edge_start_[c - 1];
+        edges_.resize(static_cast<std::size_t>(edge_start_.back()));
+        fill.assign(edge_start_.begin(), edge_start_.end() - 1);
+      }
+      for (int r = 0; r < ring_count(); ++r) {
+        const Ring& points = ring(r);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+          const Vec2 c = points[i], d = points[i + 1 == points.size() ? 0 : i + 1];
+          const int x0 = cell_x(std::min(c.x, d.x)), x1 = cell_x(std::max(c.x, d.x));
+          const int y0 = cell_y(std::min(c.y, d.y)), y1 = cell_y(std::max(c.y, d.y));
+          for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x) {
+              const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
+              if (pass == 0) {
+                ++edge_start_[cell + 1];
+              } else {
+                edges_[static_cast<std::size_t>(fill[cell]++)] = {r, i};
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+
  private:
+  struct EdgeRef {
+    int ring;
+    std::size_t index;
+  };
+  int cell_x(double x) const {
+    return static_cast<int>(std::clamp((x - min_x_) * scale_x_, 0.0, side_ - 1.0));
+  }
+  int cell_y(double y) const {
+    return static_cast<int>(std::clamp((y - min_y_) * scale_y_, 0.0, side_ - 1.0));
+  }
   const Region& region_;
+  int side_ = 1;
+  double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0, scale_x_ = 0.0, scale_y_ = 0.0;
+  std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
+  std::vector<EdgeRef> edges_;
 };
 
 // Cuts the outer ring along the diagonal i-j; holes go to the piece containing them.
@@ -399,6 +472,19 @@ Evaluation evaluate(const Region& region, Measure measure, double tau,
   return e;
 }
 
+// Visits items in the order of before (a strict total order) until accept takes one, without
+// sorting them all: usually the first few are taken. Returns the accepted item, or nullopt.
+template <typename T, typename Before, typename Accept>
+std::optional<T> first_accepted(std::vector<T>& items, Before before, Accept accept) {
+  auto after = [&](const T& u, const T& v) { return before(v, u); };
+  std::make_heap(items.begin(), items.end(), after);
+  for (auto end = items.end(); end != items.begin(); --end) {
+    std::pop_heap(items.begin(), end, after);
+    if (accept(*(end - 1))) return *(end - 1);
+  }
+  return std::nullopt;
+}
+
 // Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
 std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
@@ -434,10 +520,10 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return u.score != v.score ? u.score > v.score : u.index < v.index;
   };
   for (auto* list : {&resolving, &others}) {
-    std::sort(list->begin(), list->end(), by_score);
-    for (const Candidate& c : *list) {
-      if (view.is_diagonal({0, r}, {0, c.index})) return split_outer(region, r, c.index);
-    }
+    const auto chosen = first_accepted(*list, by_score, [&](const Candidate& c) {
+      return view.is_diagonal({0, r}, {0, c.index});
+    });
+    if (chosen) return split_outer(region, r, chosen->index);
   }
   return std::nullopt;
 }
@@ -447,7 +533,8 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
 std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, const Evaluation& e,
                                                       std::size_t h,
                                                       const DecomposeSettings& settings) {
-  const RegionView view(region);
+  RegionView view(region);
+  view.index_edges();
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const int hole_ring = static_cast<int>(h + 1);
@@ -456,12 +543,12 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::vector<double> d(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) d[i] = distance(outer[i], hole[p]);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t u, std::size_t v) { return d[u] != d[v] ? d[u] < d[v] : u < v; });
-    for (std::size_t i : order) {
-      if (i != skip && view.is_diagonal({hole_ring, p}, {0, i})) return i;
-    }
-    return kNone;
+    const auto chosen = first_accepted(
+        order, [&](std::size_t u, std::size_t v) { return d[u] != d[v] ? d[u] < d[v] : u < v; },
+        [&](std::size_t i) {
+          return i != skip && view.is_diagonal({hole_ring, p}, {0, i});
+        });
+    return chosen ? *chosen : kNone;
   };
   auto best_second = [&](std::size_t p, std::size_t x, std::size_t q) -> std::size_t {
     struct Candidate {
@@ -475,15 +562,16 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
           {(1.0 + settings.sc * e.outer.vertex[i]) / (settings.sd * distance(outer[i], hole[q])),
            i});
     }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& u, const Candidate& v) {
-      return u.score != v.score ? u.score > v.score : u.index < v.index;
-    });
-    for (const Candidate& c : candidates) {
-      if (!view.is_diagonal({hole_ring, q}, {0, c.index})) continue;
-      if (segments_intersect(hole[p], outer[x], hole[q], outer[c.index])) continue;
-      return c.index;
-    }
-    return kNone;
+    const auto chosen = first_accepted(
+        candidates,
+        [](const Candidate& u, const Candidate& v) {
+          return u.score != v.score ? u.score > v.score : u.index < v.index;
+        },
+        [&](const Candidate& c) {
+          return view.is_diagonal({hole_ring, q}, {0, c.index}) &&
+                 !segments_intersect(hole[p], outer[x], hole[q], outer[c.index]);
+        });
+    return chosen ? chosen->index : kNone;
   };
   const HoleConcavity& info = e.holes[h];
   std::vector<std::pair<std::size_t, std::size_t>> attempts{{info.joined, info.far_end},
