@@ -505,25 +505,32 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   in_b /= std::hypot(in_b.x, in_b.y);
   Vec2 bisector = -(in_a + in_b);
   if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
+  std::vector<std::size_t> other_indices;
   for (std::size_t i = 0; i < n; ++i) {
     if (i == r || i == (r + 1) % n || i == (r + n - 1) % n) continue;
     const Vec2 x = ring[i];
-    const double length = distance(pr, x);
     if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
+      const double length = distance(pr, x);
       resolving.push_back({(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length), i});
     } else {
-      const Vec2 d = (x - pr) / length;
-      others.push_back({d.x * bisector.x + d.y * bisector.y, i});
+      other_indices.push_back(i);
     }
   }
   auto by_score = [](const Candidate& u, const Candidate& v) {
     return u.score != v.score ? u.score > v.score : u.index < v.index;
   };
-  for (auto* list : {&resolving, &others}) {
-    const auto chosen = first_accepted(*list, by_score, [&](const Candidate& c) {
-      return view.is_diagonal({0, r}, {0, c.index});
-    });
-    if (chosen) return split_outer(region, r, chosen->index);
+  auto is_valid = [&](const Candidate& c) { return view.is_diagonal({0, r}, {0, c.index}); };
+  if (const auto chosen = first_accepted(resolving, by_score, is_valid)) {
+    return split_outer(region, r, chosen->index);
+  }
+  // Rarely needed: scored only when no resolving diagonal is valid.
+  for (std::size_t i : other_indices) {
+    const Vec2 x = ring[i];
+    const Vec2 d = (x - pr) / distance(pr, x);
+    others.push_back({d.x * bisector.x + d.y * bisector.y, i});
+  }
+  if (const auto chosen = first_accepted(others, by_score, is_valid)) {
+    return split_outer(region, r, chosen->index);
   }
   return std::nullopt;
 }
@@ -619,7 +626,8 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
-    const Region component = tree.nodes_[std::size_t(id)].component;
+    // Valid until the children are appended below (nodes_ may then reallocate).
+    const Region& component = tree.nodes_[std::size_t(id)].component;
     const Evaluation e = evaluate(component, settings.measure, settings.tau, &cache);
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;

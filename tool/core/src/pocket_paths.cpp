@@ -231,7 +231,7 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
       if (v != task.a && v != task.b) w = v;
     }
     const Vec2 pw = point(w);
-    const std::vector<int>& f = task.funnel;
+    std::vector<int>& f = task.funnel;
     const int apex = task.apex;
     const int size = static_cast<int>(f.size());
     int wrap = -1;
@@ -270,9 +270,10 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
           {right_triangle, w, task.b, std::move(child), std::max(wrap, apex) - wrap + 1});
     }
     if (left_triangle >= 0) {
-      std::vector<int> child(f.begin(), f.begin() + wrap + 1);
-      child.push_back(w);
-      stack.push_back({left_triangle, task.a, w, std::move(child), std::min(wrap, apex)});
+      // The left funnel is a prefix of this one: reuse its storage.
+      f.resize(static_cast<std::size_t>(wrap + 1));
+      f.push_back(w);
+      stack.push_back({left_triangle, task.a, w, std::move(f), std::min(wrap, apex)});
     }
   }
   return distance;

@@ -1,5 +1,7 @@
 #include "hullcook/core/predicates.h"
 
+#include "predicates_inline.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -71,16 +73,16 @@ int orientation(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
-  if (orientation(a, b, p) != 0) return false;
+  if (detail::fast_orientation(a, b, p) != 0) return false;
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
          p.y <= std::max(a.y, b.y);
 }
 
 bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = orientation(a, b, c);
-  const int o2 = orientation(a, b, d);
-  const int o3 = orientation(c, d, a);
-  const int o4 = orientation(c, d, b);
+  const int o1 = detail::fast_orientation(a, b, c);
+  const int o2 = detail::fast_orientation(a, b, d);
+  const int o3 = detail::fast_orientation(c, d, a);
+  const int o4 = detail::fast_orientation(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
   auto within_box = [](Vec2 p, Vec2 q, Vec2 r) {
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
@@ -94,8 +96,8 @@ bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 bool segments_cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  return orientation(a, b, c) * orientation(a, b, d) < 0 &&
-         orientation(c, d, a) * orientation(c, d, b) < 0;
+  return detail::fast_orientation(a, b, c) * detail::fast_orientation(a, b, d) < 0 &&
+         detail::fast_orientation(c, d, a) * detail::fast_orientation(c, d, b) < 0;
 }
 
 }  // namespace hullcook
