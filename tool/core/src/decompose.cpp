@@ -310,6 +310,8 @@ class RegionView {
       if (is(u, i) || is(u, j) || is(v, i) || is(v, j)) return false;
       return segments_intersect(a, b, c, d);
     };
+    // The edge that blocked the previous candidate often blocks this one too.
+    if (last_blocker_.ring >= 0 && blocks(last_blocker_.ring, last_blocker_.index)) return false;
     if (!edge_start_.empty()) {
       // Any edge meeting ab shares a cell with ab's box: cells are a monotone function of the
       // coordinates, applied alike to both boxes.
@@ -319,7 +321,10 @@ class RegionView {
           const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
           for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
             const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
-            if (blocks(edge.ring, edge.index)) return false;
+            if (blocks(edge.ring, edge.index)) {
+              last_blocker_ = edge;
+              return false;
+            }
           }
         }
       }
@@ -327,7 +332,10 @@ class RegionView {
     }
     for (int r = 0; r < ring_count(); ++r) {
       for (std::size_t i = 0; i < ring(r).size(); ++i) {
-        if (blocks(r, i)) return false;
+        if (blocks(r, i)) {
+          last_blocker_ = {r, i};
+          return false;
+        }
       }
     }
     return true;
@@ -391,6 +399,7 @@ class RegionView {
   double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0, scale_x_ = 0.0, scale_y_ = 0.0;
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
+  mutable EdgeRef last_blocker_{-1, 0};
 };
 
 // Cuts the outer ring along the diagonal i-j; holes go to the piece containing them.
