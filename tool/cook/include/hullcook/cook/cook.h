@@ -21,24 +21,26 @@ struct Tolerance {
 
   // Parses "0.5", "2px" or "1%". Throws UsageError on anything else or a negative value.
   static Tolerance parse(const std::string& text);
-  double resolve(double enclosing_radius) const { return relative ? value * enclosing_radius : value; }
+  double resolve(double enclosing_radius) const {
+    return relative ? value * enclosing_radius : value;
+  }
 };
 
 struct Settings {
   // Decomposition (issue 3).
-  Tolerance tau{2.0, false};  // [input units] or relative to R
-  std::string measure = "h1";  // sl | sp | h1 | h2
-  double sc = 0.1;             // Eq. 8 weight of the concavity of the cut's far end
-  double sd = 1.0;             // Eq. 8 weight of the cut's length
-  std::size_t max_pieces = 0;  // 0: no budget; else the finest level with at most this many
+  Tolerance tau{2.0, false};    // [input units] or relative to R
+  std::string measure = "h1";   // sl | sp | h1 | h2
+  double sc = 0.1;              // Eq. 8 weight of the concavity of the cut's far end
+  double sd = 1.0;              // Eq. 8 weight of the cut's length
+  std::size_t max_pieces = 0;   // 0: no budget; else the finest level with at most this many
   std::vector<Tolerance> lods;  // extra levels of detail (coarser τ), read off the tree
 
   // Tracing (issue 4).
-  int alpha = 128;  // opaque where alpha >= this
+  int alpha = 128;                                       // opaque where alpha >= this
   std::optional<std::array<std::uint8_t, 3>> color_key;  // RGB traced as transparent
-  double min_blob_area = 4.0;                             // [px²]
-  double min_hole_area = 4.0;                             // [px²]
-  std::optional<double> simplify;                         // [px] default: τ / 4
+  double min_blob_area = 4.0;                            // [px²]
+  double min_hole_area = 4.0;                            // [px²]
+  std::optional<double> simplify;                        // [px] default: τ / 4
   std::uint64_t max_pixels = 64ull * 1000 * 1000;
 
   // Pixels to world.
@@ -47,8 +49,8 @@ struct Settings {
   bool y_down = false;                  // keep image orientation (y down) in the output
 
   // Engine constraints.
-  std::size_t max_verts = 8;    // per hull; 0 = unlimited
-  std::optional<double> weld;   // [output units] default kDefaultWeld
+  std::size_t max_verts = 8;   // per hull; 0 = unlimited
+  std::optional<double> weld;  // [output units] default kDefaultWeld
 
   // Output.
   std::optional<PhysicsProperties> physics;

@@ -11,8 +11,8 @@ namespace hullcook {
 // {"hullcook": 1, "assets": [...]} with coordinates in output units, printed with %.17g so they
 // round-trip a double. Besides issue 3's fields, each asset carries "levels" ([{tau, hulls}],
 // finest first, hulls after the engine limits), "image" ({width, height, pixels_per_unit,
-// pivot}) for traced images, "physics" when the asset has properties, "warnings" when there are any, and stats.traced_vertices and
-// stats.trace_ms. Deterministic but for the *_ms timings.
+// pivot}) for traced images, "physics" when the asset has properties, "warnings" when there are
+// any, and stats.traced_vertices and stats.trace_ms. Deterministic but for the *_ms timings.
 std::string debug_json(const std::vector<CookedAsset>& assets);
 
 }  // namespace hullcook
