@@ -338,7 +338,10 @@ Level Asset::level(std::size_t i) const noexcept {
   const AssetRecord record = load<AssetRecord>(record_);
   const std::size_t global = record.first_level + i;
   const LevelRecord level_record_value = level_record(bundle_, header, global);
-  level.bundle_ = bundle_;
+  level.hull_records_ = bundle_ + header.hulls_offset;
+  level.vertex_records_ = bundle_ + header.vertices_offset;
+  level.hull_total_ = header.hull_count;
+  level.vertex_total_ = header.vertex_count;
   level.first_hull_ = level_record_value.first_hull;
   level.hull_count_ = hull_end(bundle_, header, global) - level_record_value.first_hull;
   level.tau_ = level_record_value.tau;
@@ -386,14 +389,23 @@ Physics Asset::physics() const noexcept {
 
 // ---- Level and Hull ---------------------------------------------------------------------------
 
+namespace {
+// The end of hull `global`'s vertex range, from the level's cached section pointers.
+std::uint32_t level_vertex_end(const unsigned char* hulls, std::uint32_t hull_total,
+                               std::uint32_t vertex_total, std::size_t global) {
+  return global + 1 < hull_total ? load<std::uint32_t>(hulls + (global + 1) * sizeof(HullRecord))
+                                 : vertex_total;
+}
+}  // namespace
+
 Hull Level::hull(std::size_t i) const noexcept {
   Hull hull;
   if (i >= hull_count_) return hull;
-  const BundleHeader header = header_of(bundle_);
   const std::size_t global = first_hull_ + i;
-  const HullRecord record = hull_record(bundle_, header, global);
-  hull.vertices_ = bundle_ + header.vertices_offset + 4u * record.first_vertex;
-  hull.count_ = vertex_end(bundle_, header, global) - record.first_vertex;
+  const HullRecord record = load<HullRecord>(hull_records_ + global * sizeof(HullRecord));
+  hull.vertices_ = vertex_records_ + 4u * record.first_vertex;
+  hull.count_ =
+      level_vertex_end(hull_records_, hull_total_, vertex_total_, global) - record.first_vertex;
   hull.base_x_ = record.base_x;
   hull.base_y_ = record.base_y;
   hull.step_ = step_;
@@ -402,28 +414,17 @@ Hull Level::hull(std::size_t i) const noexcept {
 
 std::size_t Level::vertex_count() const noexcept {
   if (hull_count_ == 0) return 0;
-  const BundleHeader header = header_of(bundle_);
   const std::size_t last = first_hull_ + hull_count_ - 1;
-  return vertex_end(bundle_, header, last) - hull_record(bundle_, header, first_hull_).first_vertex;
-}
-
-Vec2 Hull::vertex(std::size_t i) const noexcept {
-  const VertexRecord v = load<VertexRecord>(vertices_ + 4u * i);
-  return {static_cast<float>(format::dequantize(base_x_, v.dx, step_)),
-          static_cast<float>(format::dequantize(base_y_, v.dy, step_))};
+  return level_vertex_end(hull_records_, hull_total_, vertex_total_, last) -
+         load<HullRecord>(hull_records_ + std::size_t{first_hull_} * sizeof(HullRecord))
+             .first_vertex;
 }
 
 std::size_t Hull::copy_vertices(Vec2* out, std::size_t capacity,
                                 Placement placement) const noexcept {
   const std::size_t n = count_ < capacity ? count_ : capacity;
   if (out == nullptr) return count_;
-  for (std::size_t i = 0; i < n; ++i) {
-    // Mirroring flips the orientation; reading backwards restores counter-clockwise order.
-    const std::size_t source = placement.mirror_x ? count_ - 1 - i : i;
-    Vec2 p = vertex(source);
-    if (placement.mirror_x) p.x = -p.x;
-    out[i] = {p.x * placement.scale, p.y * placement.scale};
-  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = placed_vertex(i, placement);
   return count_;
 }
 

@@ -492,3 +492,33 @@ TEST(Corruption, DistinctStatusesForDistinctProblems) {
 
 }  // namespace
 }  // namespace hullcook
+
+namespace hullcook {
+namespace {
+
+TEST(Crc32, MatchesTheStandardCheckValueAtEveryLengthAndSplit) {
+  EXPECT_EQ(format::crc32(0, "123456789", 9), 0xCBF43926u);  // CRC-32/ISO-HDLC check value
+  // The 8-byte path against the bytewise definition, on every length and alignment.
+  std::string text;
+  for (int i = 0; i < 100; ++i) text.push_back(static_cast<char>(i * 37 + 11));
+  auto bitwise = [](const std::string& s) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char byte : s) {
+      c ^= byte;
+      for (int b = 0; b < 8; ++b) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return ~c;
+  };
+  for (std::size_t start = 0; start < 8; ++start)
+    for (std::size_t length = 0; start + length <= text.size(); ++length) {
+      const std::string part = text.substr(start, length);
+      ASSERT_EQ(format::crc32(0, text.data() + start, length), bitwise(part));
+      const std::size_t half = length / 3;
+      ASSERT_EQ(
+          format::crc32(format::crc32(0, part.data(), half), part.data() + half, length - half),
+          bitwise(part));
+    }
+}
+
+}  // namespace
+}  // namespace hullcook

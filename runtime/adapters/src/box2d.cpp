@@ -3,11 +3,13 @@
 namespace hullcook::box2d {
 
 bool set_polygon(const runtime::Hull& hull, b2PolygonShape& shape, runtime::Placement placement) {
-  runtime::Vec2 points[b2_maxPolygonVertices];
-  const std::size_t count = hull.copy_vertices(points, b2_maxPolygonVertices, placement);
+  const std::size_t count = hull.vertex_count();
   const std::size_t used = count < b2_maxPolygonVertices ? count : b2_maxPolygonVertices;
   b2Vec2 vertices[b2_maxPolygonVertices];
-  for (std::size_t i = 0; i < used; ++i) vertices[i].Set(points[i].x, points[i].y);
+  for (std::size_t i = 0; i < used; ++i) {
+    const runtime::Vec2 p = hull.placed_vertex(i, placement);
+    vertices[i].Set(p.x, p.y);
+  }
   shape.Set(vertices, static_cast<int32>(used));
   return static_cast<std::size_t>(shape.m_count) == count;
 }

@@ -25,6 +25,8 @@
 // them and stay unchanged. Default-constructed views are empty (every count is 0).
 #pragma once
 
+#include "hullcook/format/bundle_layout.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -98,7 +100,21 @@ class Hull {
   Hull() = default;
   std::size_t vertex_count() const noexcept { return count_; }
   // Vertex i (i < vertex_count()) [output units], dequantized; undefined for i out of range.
-  Vec2 vertex(std::size_t i) const noexcept;
+  Vec2 vertex(std::size_t i) const noexcept {
+    const auto v = format::load<format::VertexRecord>(vertices_ + 4u * i);
+    return {static_cast<float>(format::dequantize(base_x_, v.dx, step_)),
+            static_cast<float>(format::dequantize(base_y_, v.dy, step_))};
+  }
+  // Vertex i of the placed hull [game units]: mirrored hulls are read backwards so that they
+  // stay counter-clockwise. i < vertex_count().
+  Vec2 placed_vertex(std::size_t i, Placement placement) const noexcept {
+    if (!placement.mirror_x) {
+      const Vec2 p = vertex(i);
+      return {p.x * placement.scale, p.y * placement.scale};
+    }
+    const Vec2 p = vertex(count_ - 1 - i);
+    return {-p.x * placement.scale, p.y * placement.scale};
+  }
   // Writes min(vertex_count(), capacity) vertices, placed, counter-clockwise, to out and returns
   // vertex_count() (so a return value > capacity means out was too small and is incomplete).
   std::size_t copy_vertices(Vec2* out, std::size_t capacity,
@@ -129,7 +145,9 @@ class Level {
 
  private:
   friend class Asset;
-  const unsigned char* bundle_ = nullptr;
+  const unsigned char* hull_records_ = nullptr;      // the bundle's hull section
+  const unsigned char* vertex_records_ = nullptr;    // the bundle's vertex section
+  std::uint32_t hull_total_ = 0, vertex_total_ = 0;  // the bundle's counts
   std::uint32_t first_hull_ = 0;
   std::size_t hull_count_ = 0;
   float tau_ = 0.0f;
