@@ -43,6 +43,10 @@ constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+// Ring index steps without a division (i < n).
+std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
+std::size_t prev_index(std::size_t i, std::size_t n) { return i == 0 ? n - 1 : i - 1; }
+
 // The outer boundary's concavity under a measure.
 struct OuterConcavity {
   std::vector<double> vertex;  // per vertex: the value Eq. 8 and the witness use
@@ -55,7 +59,7 @@ struct OuterConcavity {
 
 bool is_notch(const Ring& ring, std::size_t i) {
   const std::size_t n = ring.size();
-  return detail::fast_orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) < 0;
+  return detail::fast_orientation(ring[prev_index(i, n)], ring[i], ring[next_index(i, n)]) < 0;
 }
 
 // Shortest paths of pockets already measured in an ancestor. A pocket is its chain from β- to β+;
@@ -89,7 +93,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   // Vertices exactly on a hull edge split its bridge, so every pocket polygon stays simple.
   for (std::size_t k = 0; k < hull.size(); ++k) {
     const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
-    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+    for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n)) {
       if (detail::fast_orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
     }
   }
@@ -97,27 +101,26 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   while (!on_hull[start]) ++start;
   std::vector<Vec2> chain;
   double best_witness_value = -1.0;
-  for (std::size_t step = 0; step < n; ++step) {
-    const std::size_t s = (start + step) % n;
+  for (std::size_t step = 0, s = start; step < n; ++step, s = next_index(s, n)) {
     if (!on_hull[s]) continue;
-    std::size_t t = (s + 1) % n;
+    std::size_t t = next_index(s, n);
     if (on_hull[t]) continue;
-    while (!on_hull[t]) t = (t + 1) % n;
+    while (!on_hull[t]) t = next_index(t, n);
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
     const double length = std::hypot(along.x, along.y);
     // SL: distance to the bridge's line.
     double sl_max = 0.0;
     bool hazard = false;
-    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+    for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n)) {
       const double d = std::abs(detail::fast_orient2d(bs, bt, ring[i])) / length;
       result.vertex[i] = d;
       sl_max = std::max(sl_max, d);
     }
     if (measure != Measure::sl) {
       // Observation 5.5: an edge whose outward normal opposes the bridge's.
-      for (std::size_t i = s; i != t && !hazard; i = (i + 1) % n) {
-        const Vec2 e = ring[(i + 1) % n] - ring[i];
+      for (std::size_t i = s; i != t && !hazard; i = next_index(i, n)) {
+        const Vec2 e = ring[next_index(i, n)] - ring[i];
         hazard = e.x * along.x + e.y * along.y < 0.0;
       }
     }
@@ -132,7 +135,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       std::vector<double> computed;
       if (!cached) {
         chain.clear();
-        for (std::size_t i = s;; i = (i + 1) % n) {
+        for (std::size_t i = s;; i = next_index(i, n)) {
           chain.push_back(ring[i]);
           if (i == t) break;
         }
@@ -147,15 +150,16 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       const bool keep_sl = measure == Measure::h2 && sl_max > tau;
       if (keep_sl && result.depth.empty()) result.depth = result.vertex;
       std::size_t k = 1;
-      for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n, ++k) {
+      for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n), ++k) {
         if (!keep_sl) result.vertex[i] = paths[k];
         if (!result.depth.empty()) result.depth[i] = paths[k];
       }
     } else if (!result.depth.empty()) {
-      for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) result.depth[i] = result.vertex[i];
+      for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n))
+        result.depth[i] = result.vertex[i];
     }
     result.value = std::max(result.value, pocket_value);
-    for (std::size_t i = (s + 1) % n; i != t; i = (i + 1) % n) {
+    for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n)) {
       if (result.vertex[i] > best_witness_value && is_notch(ring, i)) {
         best_witness_value = result.vertex[i];
         result.witness = i;
@@ -407,11 +411,11 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
   Region first, second;
-  for (std::size_t k = i;; k = (k + 1) % n) {
+  for (std::size_t k = i;; k = next_index(k, n)) {
     first.outer.push_back(ring[k]);
     if (k == j) break;
   }
-  for (std::size_t k = j;; k = (k + 1) % n) {
+  for (std::size_t k = j;; k = next_index(k, n)) {
     second.outer.push_back(ring[k]);
     if (k == i) break;
   }
@@ -430,7 +434,7 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   const Ring& hole = region.holes[h];
   const std::size_t n = outer.size(), m = hole.size();
   Region first, second;
-  for (std::size_t k = x;; k = (k + 1) % n) {
+  for (std::size_t k = x;; k = next_index(k, n)) {
     first.outer.push_back(outer[k]);
     if (k == y) break;
   }
@@ -438,7 +442,7 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
     first.outer.push_back(hole[k]);
     if (k == p) break;
   }
-  for (std::size_t k = y;; k = (k + 1) % n) {
+  for (std::size_t k = y;; k = next_index(k, n)) {
     second.outer.push_back(outer[k]);
     if (k == x) break;
   }
@@ -502,7 +506,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
   const RegionView view(region);
-  const Vec2 a = ring[(r + n - 1) % n], pr = ring[r], b = ring[(r + 1) % n];
+  const Vec2 a = ring[prev_index(r, n)], pr = ring[r], b = ring[next_index(r, n)];
   struct Candidate {
     double score;
     std::size_t index;
@@ -516,7 +520,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
   std::vector<std::size_t> other_indices;
   for (std::size_t i = 0; i < n; ++i) {
-    if (i == r || i == (r + 1) % n || i == (r + n - 1) % n) continue;
+    if (i == r || i == next_index(r, n) || i == prev_index(r, n)) continue;
     const Vec2 x = ring[i];
     if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
       const double length = distance(pr, x);

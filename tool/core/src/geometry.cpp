@@ -118,7 +118,7 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
       first = i;
     }
   }
-  auto vertex = [&](std::size_t k) { return (first + k) % n; };
+  auto vertex = [&](std::size_t k) { return first + k < n ? first + k : first + k - n; };
   auto point = [&](std::size_t index) { return ring[index]; };
   const int start_turn =
       detail::fast_orientation(ring[vertex(0)], ring[vertex(1)], ring[vertex(2)]);
