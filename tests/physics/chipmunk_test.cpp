@@ -156,14 +156,41 @@ TEST(Chipmunk, EveryHullIsAcceptedUnchanged) {
   const std::string bytes = write_bundle({test::scene_asset("random", hulls, 0.0)});
   Bundle bundle;
   ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
-  cpBody* body = cpBodyNew(1, 1);
+  Scene scene;
+  cpBody* body = cpSpaceAddBody(scene.space, cpBodyNew(0, 0));
   const runtime::Asset asset = bundle.find("random");
-  const chipmunk::ShapeReport report = chipmunk::add_shapes(nullptr, body, asset, asset.level(0));
+  EXPECT_EQ(chipmunk::add_shapes(nullptr, body, asset, asset.level(0)).created, 0u);
+  const chipmunk::ShapeReport report =
+      chipmunk::add_shapes(scene.space, body, asset, asset.level(0));
   EXPECT_EQ(report.created, hulls.size());
   EXPECT_EQ(report.altered, 0u);
+  // And each shape, hull by hull: Chipmunk kept every vertex.
+  struct Check {
+    const runtime::Level level;
+    std::size_t shapes = 0, mismatches = 0;
+  } check{asset.level(0)};
   cpBodyEachShape(
-      body, [](cpBody*, cpShape* shape, void*) { cpShapeFree(shape); }, nullptr);
-  cpBodyFree(body);
+      body,
+      [](cpBody*, cpShape* shape, void* data) {
+        auto* c = static_cast<Check*>(data);
+        ++c->shapes;
+        bool matched = false;
+        {
+          // Chipmunk may rotate the vertex list: find the hull holding the shape's first vertex
+          // and compare the counts.
+          for (std::size_t h = 0; h < c->level.hull_count() && !matched; ++h)
+            for (std::size_t v = 0; v < c->level.hull(h).vertex_count() && !matched; ++v)
+              matched =
+                  static_cast<std::size_t>(cpPolyShapeGetCount(shape)) ==
+                      c->level.hull(h).vertex_count() &&
+                  cpvdist(cpPolyShapeGetVert(shape, 0),
+                          cpv(c->level.hull(h).vertex(v).x, c->level.hull(h).vertex(v).y)) < 1e-9;
+        }
+        c->mismatches += !matched;
+      },
+      &check);
+  EXPECT_EQ(check.shapes, hulls.size());
+  EXPECT_EQ(check.mismatches, 0u);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@ namespace hullcook::chipmunk {
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
                        const runtime::Level& level, const ShapeOptions& options) {
   ShapeReport report;
-  if (body == nullptr) return report;
+  if (space == nullptr || body == nullptr) return report;
   const float scale = options.placement.scale;
   cpFloat density = options.density, friction = options.friction;
   cpFloat elasticity = options.elasticity;
@@ -38,7 +38,7 @@ ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset
     cpShapeSetFilter(shape, filter);
     // After the filter: setting the density makes the body accumulate its mass from the shape.
     cpShapeSetDensity(shape, density);
-    if (space != nullptr) cpSpaceAddShape(space, shape);
+    cpSpaceAddShape(space, shape);
     report.area += cpShapeGetArea(shape);
     ++report.created;
   }

@@ -28,12 +28,14 @@ struct ShapeOptions {
   cpFloat elasticity = 0.0;       // used unless the asset's physics apply
 };
 
-// Creates one cpPolyShape per hull of level on body and adds it to space (when space is not
-// null; otherwise the caller adds the shapes, which it can reach with cpBodyEachShape). Each
-// shape gets a density, so that Chipmunk accumulates the body's mass, centre of gravity and
-// moment of inertia from the hulls themselves (set cpBodySetMass/Moment afterwards to
-// override). The asset's density is in kg per output unit²; it is converted to game units with
-// the placement scale. Must not be called while the space is locked (during cpSpaceStep).
+// Creates one cpPolyShape per hull of level on body and adds it to space (both must not be null;
+// nothing is created otherwise: Chipmunk attaches a shape to its body only when the shape is
+// added to a space, and the space frees nothing, so remove and free the shapes as usual, e.g.
+// with cpBodyEachShape). Each shape gets a density, so that Chipmunk accumulates the body's
+// mass, centre of gravity and moment of inertia from the hulls themselves (set cpBodySetMass/
+// Moment afterwards to // override). The asset's density is in kg per output unit²; it is converted
+// to game units with the placement scale. Must not be called while the space is locked (during
+// cpSpaceStep).
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
                        const runtime::Level& level, const ShapeOptions& options = {});
 
