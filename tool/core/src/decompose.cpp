@@ -215,6 +215,14 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     auto consider = [&](const Ring& ring, int ring_id) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
         for (std::size_t end : {p, q}) {
+          // Skip the costly hypot when the squared distance is surely beyond both bests
+          // (best <= best_outer); the margin dwarfs rounding, so the choices are unchanged.
+          const double bound = ring_id == 0 ? best_outer : best;
+          const Vec2 offset = ring[i] - hole[end];
+          if (bound > 1e-100 && bound < 1e100 &&
+              offset.x * offset.x + offset.y * offset.y > bound * bound * (1.0 + 1e-9)) {
+            continue;
+          }
           const double d = distance(ring[i], hole[end]);
           if (d < best) {
             best = d;
