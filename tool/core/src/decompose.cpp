@@ -531,7 +531,11 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     if (i == r || i == next_index(r, n) || i == prev_index(r, n)) continue;
     const Vec2 x = ring[i];
     if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
-      const double length = distance(pr, x);
+      // A provisional score with sqrt instead of hypot; the Eq. 8 score is computed on demand.
+      const Vec2 offset = x - pr;
+      const double squared = offset.x * offset.x + offset.y * offset.y;
+      const double length =
+          squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : distance(pr, x);
       resolving.push_back({(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length), i});
     } else {
       other_indices.push_back(i);
@@ -541,8 +545,31 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return u.score != v.score ? u.score > v.score : u.index < v.index;
   };
   auto is_valid = [&](const Candidate& c) { return view.is_diagonal({0, r}, {0, c.index}); };
-  if (const auto chosen = first_accepted(resolving, by_score, is_valid)) {
-    return split_outer(region, r, chosen->index);
+  // Candidates in the order of their exact scores: a provisional score is within 1e-9 (relative)
+  // of the exact one, so the best exact score known is final once it beats every provisional
+  // score left by more than that.
+  auto by_provisional = [&](const Candidate& u, const Candidate& v) { return by_score(v, u); };
+  std::make_heap(resolving.begin(), resolving.end(), by_provisional);
+  std::vector<Candidate> scored;
+  auto by_exact = [&](const Candidate& u, const Candidate& v) { return by_score(v, u); };
+  for (auto end = resolving.end();;) {
+    while (end != resolving.begin()) {
+      const double provisional = resolving.front().score;
+      if (!scored.empty() && scored.front().score > provisional + std::abs(provisional) * 1e-9) {
+        break;
+      }
+      std::pop_heap(resolving.begin(), end, by_provisional);
+      --end;
+      const std::size_t i = end->index;
+      scored.push_back(
+          {(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * distance(pr, ring[i])), i});
+      std::push_heap(scored.begin(), scored.end(), by_exact);
+    }
+    if (scored.empty()) break;
+    std::pop_heap(scored.begin(), scored.end(), by_exact);
+    const Candidate best = scored.back();
+    scored.pop_back();
+    if (is_valid(best)) return split_outer(region, r, best.index);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
   for (std::size_t i : other_indices) {
