@@ -368,6 +368,15 @@ std::string ratio_text(double ratio) {
 
 std::string percent_text(double fraction) { return tau_label(fraction * 100) + "%"; }
 
+std::size_t vertex_count(const Model& model) {
+  std::size_t vertices = 0;
+  for (const Region& region : regions_of(model)) {
+    vertices += region.outer.size();
+    for (const Ring& hole : region.holes) vertices += hole.size();
+  }
+  return vertices;
+}
+
 // Reflex vertices: outer rings are counter-clockwise and holes clockwise, so the polygon's
 // interior is on the left of every ring and a notch is a right turn.
 std::size_t notch_count(const Ring& ring) {
@@ -686,10 +695,12 @@ class Report {
         md << " |\n";
       }
     }
-    md << "\nGrowth from monkey (1204 vertices) to monkey_2 (9632, 8×) at τ = 1% of the paper's R, "
-          "our time ratio (reference's in brackets):";
     const Model& monkey = model_named("monkey");
     const Model& monkey_2 = model_named("monkey_2");
+    md << "\nGrowth from monkey (" << vertex_count(monkey) << " vertices) to monkey_2 ("
+       << vertex_count(monkey_2)
+       << ") at τ = 1% of the paper's R, our time ratio (reference's in "
+          "brackets):";
     for (Measure measure : {Measure::sp, Measure::h1, Measure::sl, Measure::h2}) {
       std::optional<double> small =
           ms(table_name(measure_name(measure), monkey, 0.01 * monkey.paper_radius));
