@@ -206,6 +206,12 @@ void put(std::string& bytes, std::size_t offset, const T& value) {
   std::memcpy(bytes.data() + offset, &value, sizeof(T));
 }
 
+std::uint16_t measure_code(const std::string& measure) {
+  for (std::uint16_t code = 1; code < format::kMeasureCount; ++code)
+    if (measure == format::kMeasureNames[code]) return code;
+  return 0;
+}
+
 std::uint32_t to_u32(std::size_t value) {
   if (value > std::numeric_limits<std::uint32_t>::max())
     throw OutputError("bundle: larger than 4 GiB, the format's limit");
@@ -269,7 +275,10 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
     AssetRecord record{};
     record.name_offset = name_offset;
     record.name_length = static_cast<std::uint16_t>(asset.name.size());
-    record.flags = asset.physics ? format::kAssetHasPhysics : 0;
+    record.flags =
+        static_cast<std::uint16_t>((asset.physics ? format::kAssetHasPhysics : 0) |
+                                   (asset.transform.flip_y ? format::kAssetFlipY : 0) |
+                                   (measure_code(asset.measure) << format::kAssetMeasureShift));
     record.first_level = level_index;
     record.image_width = static_cast<std::uint16_t>(asset.image_width);
     record.image_height = static_cast<std::uint16_t>(asset.image_height);
