@@ -325,10 +325,22 @@ class RegionView {
     // The edge that blocked the previous candidate often blocks this one too.
     if (last_blocker_.ring >= 0 && blocks(last_blocker_.ring, last_blocker_.index)) return false;
     if (!edge_start_.empty()) {
-      // Any edge meeting ab shares a cell with ab's box: cells are a monotone function of the
-      // coordinates, applied alike to both boxes.
-      const int x0 = cell_x(min_x), x1 = cell_x(max_x), y0 = cell_y(min_y), y1 = cell_y(max_y);
+      // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
+      // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
+      // cell so that rounding cannot leave X's cell out.
+      const int y0 = cell_y(min_y), y1 = cell_y(max_y);
       for (int y = y0; y <= y1; ++y) {
+        int x0 = cell_x(min_x), x1 = cell_x(max_x);
+        if (y0 < y1 && a.y != b.y) {
+          const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
+          auto x_at = [&](double line) {
+            const double t = std::clamp((line - a.y) / (b.y - a.y), 0.0, 1.0);
+            return a.x + t * (b.x - a.x);
+          };
+          const double u = x_at(low), w = x_at(high);
+          x0 = std::max(x0, cell_x(std::min(u, w)) - 1);
+          x1 = std::min(x1, cell_x(std::max(u, w)) + 1);
+        }
         for (int x = x0; x <= x1; ++x) {
           const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
           for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
@@ -506,6 +518,51 @@ std::optional<T> first_accepted(std::vector<T>& items, Before before, Accept acc
   return std::nullopt;
 }
 
+// A candidate vertex of a cut and its score (higher first, then lower index).
+struct ScoredVertex {
+  double score;
+  std::size_t index;
+};
+
+bool scores_before(const ScoredVertex& u, const ScoredVertex& v) {
+  return u.score != v.score ? u.score > v.score : u.index < v.index;
+}
+
+// The first candidate, in the order of exact(index) scores, that accept takes. The candidates
+// come with provisional scores within 1e-9 (relative) of the exact ones, so the best exact score
+// known is final once it beats every provisional score left by more than that: exact() runs on a
+// few candidates only.
+template <typename Exact, typename Accept>
+std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& provisional,
+                                                   Exact&& exact, Accept&& accept) {
+  auto after = [](const ScoredVertex& u, const ScoredVertex& v) { return scores_before(v, u); };
+  std::make_heap(provisional.begin(), provisional.end(), after);
+  std::vector<ScoredVertex> scored;
+  for (auto end = provisional.end();;) {
+    while (end != provisional.begin()) {
+      const double bound = provisional.front().score;
+      if (!scored.empty() && scored.front().score > bound + std::abs(bound) * 1e-9) break;
+      std::pop_heap(provisional.begin(), end, after);
+      --end;
+      scored.push_back({exact(end->index), end->index});
+      std::push_heap(scored.begin(), scored.end(), after);
+    }
+    if (scored.empty()) return std::nullopt;
+    std::pop_heap(scored.begin(), scored.end(), after);
+    const ScoredVertex best = scored.back();
+    scored.pop_back();
+    if (accept(best.index)) return best.index;
+  }
+}
+
+// |b - a| by sqrt: within a few ulps of distance(a, b) (hypot), or exactly it where squaring
+// could overflow or underflow.
+double provisional_distance(Vec2 a, Vec2 b) {
+  const Vec2 offset = b - a;
+  const double squared = offset.x * offset.x + offset.y * offset.y;
+  return squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : distance(a, b);
+}
+
 // Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
 std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
@@ -515,11 +572,10 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   const std::size_t n = ring.size();
   const RegionView view(region);
   const Vec2 a = ring[prev_index(r, n)], pr = ring[r], b = ring[next_index(r, n)];
-  struct Candidate {
-    double score;
-    std::size_t index;
+  std::vector<ScoredVertex> resolving, others;
+  auto eq8 = [&](std::size_t i, double length) {
+    return (1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length);
   };
-  std::vector<Candidate> resolving, others;
   // The reflex angle's bisector, for diagonals that can only reduce the notch.
   Vec2 in_a = a - pr, in_b = b - pr;
   in_a /= std::hypot(in_a.x, in_a.y);
@@ -531,45 +587,15 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     if (i == r || i == next_index(r, n) || i == prev_index(r, n)) continue;
     const Vec2 x = ring[i];
     if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
-      // A provisional score with sqrt instead of hypot; the Eq. 8 score is computed on demand.
-      const Vec2 offset = x - pr;
-      const double squared = offset.x * offset.x + offset.y * offset.y;
-      const double length =
-          squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : distance(pr, x);
-      resolving.push_back({(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length), i});
+      resolving.push_back({eq8(i, provisional_distance(pr, x)), i});
     } else {
       other_indices.push_back(i);
     }
   }
-  auto by_score = [](const Candidate& u, const Candidate& v) {
-    return u.score != v.score ? u.score > v.score : u.index < v.index;
-  };
-  auto is_valid = [&](const Candidate& c) { return view.is_diagonal({0, r}, {0, c.index}); };
-  // Candidates in the order of their exact scores: a provisional score is within 1e-9 (relative)
-  // of the exact one, so the best exact score known is final once it beats every provisional
-  // score left by more than that.
-  auto by_provisional = [&](const Candidate& u, const Candidate& v) { return by_score(v, u); };
-  std::make_heap(resolving.begin(), resolving.end(), by_provisional);
-  std::vector<Candidate> scored;
-  auto by_exact = [&](const Candidate& u, const Candidate& v) { return by_score(v, u); };
-  for (auto end = resolving.end();;) {
-    while (end != resolving.begin()) {
-      const double provisional = resolving.front().score;
-      if (!scored.empty() && scored.front().score > provisional + std::abs(provisional) * 1e-9) {
-        break;
-      }
-      std::pop_heap(resolving.begin(), end, by_provisional);
-      --end;
-      const std::size_t i = end->index;
-      scored.push_back(
-          {(1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * distance(pr, ring[i])), i});
-      std::push_heap(scored.begin(), scored.end(), by_exact);
-    }
-    if (scored.empty()) break;
-    std::pop_heap(scored.begin(), scored.end(), by_exact);
-    const Candidate best = scored.back();
-    scored.pop_back();
-    if (is_valid(best)) return split_outer(region, r, best.index);
+  auto is_valid = [&](std::size_t i) { return view.is_diagonal({0, r}, {0, i}); };
+  if (const auto chosen = first_accepted_by_score(
+          resolving, [&](std::size_t i) { return eq8(i, distance(pr, ring[i])); }, is_valid)) {
+    return split_outer(region, r, *chosen);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
   for (std::size_t i : other_indices) {
@@ -577,7 +603,8 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     const Vec2 d = (x - pr) / distance(pr, x);
     others.push_back({d.x * bisector.x + d.y * bisector.y, i});
   }
-  if (const auto chosen = first_accepted(others, by_score, is_valid)) {
+  if (const auto chosen = first_accepted(
+          others, scores_before, [&](const ScoredVertex& c) { return is_valid(c.index); })) {
     return split_outer(region, r, chosen->index);
   }
   return std::nullopt;
@@ -594,39 +621,34 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
   const Ring& hole = region.holes[h];
   const int hole_ring = static_cast<int>(h + 1);
   auto closest_visible = [&](std::size_t p, std::size_t skip) -> std::size_t {
-    std::vector<std::size_t> order(outer.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::vector<double> d(outer.size());
-    for (std::size_t i = 0; i < outer.size(); ++i) d[i] = distance(outer[i], hole[p]);
-    const auto chosen = first_accepted(
-        order, [&](std::size_t u, std::size_t v) { return d[u] != d[v] ? d[u] < d[v] : u < v; },
+    // Nearest first: the scores are negated distances.
+    std::vector<ScoredVertex> candidates(outer.size());
+    for (std::size_t i = 0; i < outer.size(); ++i) {
+      candidates[i] = {-provisional_distance(outer[i], hole[p]), i};
+    }
+    const auto chosen = first_accepted_by_score(
+        candidates, [&](std::size_t i) { return -distance(outer[i], hole[p]); },
         [&](std::size_t i) {
           return i != skip && view.is_diagonal({hole_ring, p}, {0, i});
         });
     return chosen ? *chosen : kNone;
   };
   auto best_second = [&](std::size_t p, std::size_t x, std::size_t q) -> std::size_t {
-    struct Candidate {
-      double score;
-      std::size_t index;
+    auto eq8 = [&](std::size_t i, double length) {
+      return (1.0 + settings.sc * e.outer.vertex[i]) / (settings.sd * length);
     };
-    std::vector<Candidate> candidates;
+    std::vector<ScoredVertex> candidates;
+    candidates.reserve(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
-      if (i == x) continue;
-      candidates.push_back(
-          {(1.0 + settings.sc * e.outer.vertex[i]) / (settings.sd * distance(outer[i], hole[q])),
-           i});
+      if (i != x) candidates.push_back({eq8(i, provisional_distance(outer[i], hole[q])), i});
     }
-    const auto chosen = first_accepted(
-        candidates,
-        [](const Candidate& u, const Candidate& v) {
-          return u.score != v.score ? u.score > v.score : u.index < v.index;
-        },
-        [&](const Candidate& c) {
-          return view.is_diagonal({hole_ring, q}, {0, c.index}) &&
-                 !segments_intersect(hole[p], outer[x], hole[q], outer[c.index]);
+    const auto chosen = first_accepted_by_score(
+        candidates, [&](std::size_t i) { return eq8(i, distance(outer[i], hole[q])); },
+        [&](std::size_t i) {
+          return view.is_diagonal({hole_ring, q}, {0, i}) &&
+                 !segments_intersect(hole[p], outer[x], hole[q], outer[i]);
         });
-    return chosen ? chosen->index : kNone;
+    return chosen ? *chosen : kNone;
   };
   const HoleConcavity& info = e.holes[h];
   std::vector<std::pair<std::size_t, std::size_t>> attempts{{info.joined, info.far_end},
