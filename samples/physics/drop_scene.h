@@ -85,8 +85,11 @@ inline bool is_terrain(const Options& options, const runtime::Asset& asset) {
 // Lays the bundle's assets out; returns the floor height [game units] below everything.
 inline float lay_out(const runtime::Bundle& bundle, const Options& options,
                      std::vector<Placed>& placed) {
-  float terrain_x = 0, sprite_x = 0, top = 0, bottom = 0;
+  // Terrain first, side by side; then the sprites in rows above it, wrapping at its width.
+  float terrain_x = 0, top = 0, bottom = -1.0f;
+  float sprite_x = 0, row_y = 0, row_height = 0;
   for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) row_y = top + 1.0f;
     for (std::size_t a = 0; a < bundle.asset_count(); ++a) {
       const runtime::Asset asset = bundle.asset(a);
       const bool terrain = is_terrain(options, asset);
@@ -95,18 +98,23 @@ inline float lay_out(const runtime::Bundle& bundle, const Options& options,
       if (level.hull_count() == 0) continue;
       const Box box = bounds(level, options.scale);
       Placed p{asset, level, terrain};
-      const float width = box.max_x - box.min_x, margin = 0.25f * std::max(width, 0.1f);
+      const float width = box.max_x - box.min_x, height = box.max_y - box.min_y;
       if (terrain) {
         p.x = terrain_x - box.min_x;
-        p.y = 0;
         terrain_x += width;
         top = std::max(top, box.max_y);
         bottom = std::min(bottom, box.min_y);
       } else {
+        const float margin = 0.25f * std::max(width, 0.1f);
+        if (sprite_x > 0 && sprite_x + width + 2 * margin > terrain_x) {
+          sprite_x = 0;
+          row_y += row_height + 1.0f;
+          row_height = 0;
+        }
         p.x = sprite_x - box.min_x + margin;
-        p.y = top + 1.0f - box.min_y;
+        p.y = row_y - box.min_y;
         sprite_x += width + 2 * margin;
-        bottom = std::min(bottom, -1.0f);
+        row_height = std::max(row_height, height);
       }
       placed.push_back(p);
     }
