@@ -1,0 +1,94 @@
+// cook -> .hcb -> `inspect --json` gives back the hulls of cook -> .json, within the stated
+// quantization bound (issue 5), on real sprites from samples/sprites.
+#include "../cli/run_command.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace hullcook {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+struct Point {
+  double x, y;
+};
+using Polygon = std::vector<Point>;
+
+Polygon polygon(const json& points) {
+  Polygon out;
+  for (const json& p : points) out.push_back({p[0].get<double>(), p[1].get<double>()});
+  return out;
+}
+
+// Distance from p to a convex counter-clockwise polygon (0 inside).
+double distance_to_convex(Point p, const Polygon& ring) {
+  bool inside = true;
+  double best = 1e300;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+    const double ex = b.x - a.x, ey = b.y - a.y;
+    if (ex * (p.y - a.y) - ey * (p.x - a.x) < 0) inside = false;
+    const double t =
+        std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    best = std::min(best, std::hypot(p.x - a.x - t * ex, p.y - a.y - t * ey));
+  }
+  return inside ? 0.0 : best;
+}
+
+json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+TEST(CookRoundTrip, InspectJsonGivesTheCookedHullsWithinTheQuantizationBound) {
+  const fs::path dir = fs::path(HULLCOOK_BINARY_DIR) / "tests/formats/cook_roundtrip";
+  fs::create_directories(dir);
+  const fs::path sprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+  std::string inputs;
+  for (const char* name :
+       {"frozen-bubble__shooter.png", "pingus__groundpieces__ground__sweets__lollipop.png",
+        "teeworlds__skins__body__standard.png"})
+    inputs += " " + (sprites / name).string();
+  for (const char* extension : {".json", ".hcb"}) {
+    const auto result = test::run_hullcook("cook" + inputs + " --lod 8 -o " +
+                                           (dir / (std::string("out") + extension)).string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+  }
+  const auto inspected =
+      test::run_hullcook("inspect --json " + (dir / "out.hcb").string() + " 2>/dev/null");
+  ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
+  const json stored = json::parse(inspected.output);
+  const json cooked = read_json(dir / "out.json");
+  ASSERT_EQ(stored["assets"].size(), cooked["assets"].size());
+  ASSERT_EQ(stored["assets"].size(), 3u);
+  for (std::size_t a = 0; a < cooked["assets"].size(); ++a) {
+    const json& want = cooked["assets"][a];
+    const json& got = stored["assets"][a];
+    EXPECT_EQ(got["name"], want["name"]);
+    const double tau = want["tau"].get<double>();
+    const double ppu = got["pixels_per_unit"].get<double>();
+    const double error = got["quantization_error"].get<double>();
+    EXPECT_LE(error, std::max(0.01 * tau, 1.0 / (64.0 * ppu)) * (1 + 1e-6));
+    ASSERT_EQ(got["pieces"].size(), want["pieces"].size());
+    ASSERT_EQ(got["levels"].size(), want["levels"].size());
+    for (std::size_t h = 0; h < want["pieces"].size(); ++h) {
+      const Polygon original = polygon(want["pieces"][h]["hull"]);
+      const Polygon back = polygon(got["pieces"][h]["hull"]);
+      double worst = 0, magnitude = 0;
+      for (Point p : original) magnitude = std::max({magnitude, std::fabs(p.x), std::fabs(p.y)});
+      for (Point p : original) worst = std::max(worst, distance_to_convex(p, back));
+      for (Point p : back) worst = std::max(worst, distance_to_convex(p, original));
+      EXPECT_LE(worst, error + 2e-7 * magnitude) << want["name"] << " hull " << h;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
