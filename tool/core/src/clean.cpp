@@ -13,15 +13,17 @@
 
 namespace hullcook {
 
-Ring remove_degenerate_vertices(const Ring& ring) {
-  Ring out;
-  out.reserve(ring.size());
-  for (Vec2 p : ring) {
-    while (out.size() >= 2 && detail::fast_orientation(out[out.size() - 2], out.back(), p) == 0)
-      out.pop_back();
-    if (!out.empty() && out.back() == p) continue;
-    out.push_back(p);
+void remove_degenerate_vertices_in_place(Ring& ring) {
+  // The kept prefix ring[0, kept) never overtakes the vertex being read.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Vec2 p = ring[k];
+    while (kept >= 2 && detail::fast_orientation(ring[kept - 2], ring[kept - 1], p) == 0) --kept;
+    if (kept > 0 && ring[kept - 1] == p) continue;
+    ring[kept++] = p;
   }
+  ring.resize(kept);
+  Ring& out = ring;
   // The closing edge: drop vertices that are repeated or collinear across the seam.
   bool changed = true;
   while (changed && out.size() >= 3) {
@@ -38,6 +40,11 @@ Ring remove_degenerate_vertices(const Ring& ring) {
     }
   }
   if (out.size() == 2 && out[0] == out[1]) out.pop_back();
+}
+
+Ring remove_degenerate_vertices(const Ring& ring) {
+  Ring out = ring;
+  remove_degenerate_vertices_in_place(out);
   return out;
 }
 

@@ -431,6 +431,8 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
   Region first, second;
+  first.outer.reserve((j + n - i) % n + 1);
+  second.outer.reserve((i + n - j) % n + 1);
   for (std::size_t k = i;; k = next_index(k, n)) {
     first.outer.push_back(ring[k]);
     if (k == j) break;
@@ -439,8 +441,8 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
     second.outer.push_back(ring[k]);
     if (k == i) break;
   }
-  first.outer = remove_degenerate_vertices(first.outer);
-  second.outer = remove_degenerate_vertices(second.outer);
+  remove_degenerate_vertices_in_place(first.outer);
+  remove_degenerate_vertices_in_place(second.outer);
   for (const Ring& hole : region.holes) {
     (locate_point(first.outer, hole[0]) == Location::inside ? first : second).holes.push_back(hole);
   }
@@ -470,8 +472,8 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
     second.outer.push_back(hole[k]);
     if (k == q) break;
   }
-  first.outer = remove_degenerate_vertices(first.outer);
-  second.outer = remove_degenerate_vertices(second.outer);
+  remove_degenerate_vertices_in_place(first.outer);
+  remove_degenerate_vertices_in_place(second.outer);
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];

@@ -20,4 +20,7 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
 // The result may have fewer than 3 vertices.
 Ring remove_degenerate_vertices(const Ring& ring);
 
+// The same, in place (no allocation).
+void remove_degenerate_vertices_in_place(Ring& ring);
+
 }  // namespace hullcook
