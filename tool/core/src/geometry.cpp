@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 namespace hullcook {
@@ -125,16 +126,18 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
   if (start_turn == 0) return convex_hull_indices(ring);
   // The deque holds the hull of the chain so far, counter-clockwise from bottom to top, with the
   // last added vertex at both ends.
-  std::vector<std::size_t> deque(2 * n + 1);
+  const auto deque = std::make_unique_for_overwrite<std::size_t[]>(2 * n + 1);
   std::size_t bottom = n, top = n + 3;
   deque[bottom] = deque[top] = vertex(2);
   deque[bottom + 1] = start_turn > 0 ? vertex(0) : vertex(1);
   deque[bottom + 2] = start_turn > 0 ? vertex(1) : vertex(0);
-  for (std::size_t k = 3; k < n; ++k) {
-    const std::size_t index = vertex(k);
+  // The two edges at the last added vertex, whose sides decide whether a vertex is inside.
+  Vec2 bottom_from = point(deque[bottom]), bottom_to = point(deque[bottom + 1]);
+  Vec2 top_from = point(deque[top - 1]), top_to = point(deque[top]);
+  for (std::size_t k = 3, index = vertex(3); k < n; ++k, index = index + 1 == n ? 0 : index + 1) {
     const Vec2 p = ring[index];
-    if (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) > 0 &&
-        detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) > 0) {
+    if (detail::fast_orientation(bottom_from, bottom_to, p) > 0 &&
+        detail::fast_orientation(top_from, top_to, p) > 0) {
       continue;
     }
     while (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0) {
@@ -143,6 +146,8 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
     deque[--bottom] = index;
     while (detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) <= 0) --top;
     deque[++top] = index;
+    bottom_from = p, bottom_to = point(deque[bottom + 1]);
+    top_from = point(deque[top - 1]), top_to = p;
   }
   // Drop any vertex left collinear (a chain may double back along a hull edge), keeping the
   // counter-clockwise order.
