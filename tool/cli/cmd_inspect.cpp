@@ -4,9 +4,8 @@
 #include "commands.h"
 #include "inspect.h"
 
+#include "hullcook/cook/debug_json.h"
 #include "hullcook/runtime.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -24,7 +23,6 @@ namespace hullcook::cli {
 namespace {
 
 namespace rt = hullcook::runtime;
-using json = nlohmann::json;
 
 // A float as the double of its shortest decimal form, so that 0.6f prints as 0.6 and parsing
 // the printed text gives the float back.
@@ -48,15 +46,6 @@ std::string shortest_text(float value) {
 
 std::string point_text(rt::Vec2 p) {
   return "(" + shortest_text(p.x) + ", " + shortest_text(p.y) + ")";
-}
-
-json hull_json(const rt::Hull& hull) {
-  json points = json::array();
-  for (std::size_t i = 0; i < hull.vertex_count(); ++i) {
-    const rt::Vec2 v = hull.vertex(i);
-    points.push_back({shortest_double(v.x), shortest_double(v.y)});
-  }
-  return points;
 }
 
 void print_text(const std::filesystem::path& path, const rt::Bundle& bundle) {
@@ -103,59 +92,49 @@ void print_text(const std::filesystem::path& path, const rt::Bundle& bundle) {
   }
 }
 
-// The debug JSON of issue 3. A bundle holds hulls only: `regions` is empty and each piece has
-// only its `hull` (no `component`, no `concavity`); `source` is the name; `transform` is
-// rebuilt from the pixels per unit, pivot and y direction. `levels`, `image_size`,
-// `pixels_per_unit`, `pivot`, `quantization_error` and `physics` extend the schema, with the
-// same names as the glTF inspector's.
-json debug_json(const rt::Bundle& bundle) {
-  json assets = json::array();
+// The bundle as cooked assets, for the one debug JSON writer. A bundle holds hulls only: regions
+// are empty, each piece is its hull (component and hull alike, concavity 0), the source is the
+// name, and the transform is rebuilt from the pixels per unit, pivot and y direction.
+std::vector<CookedAsset> cooked_assets(const rt::Bundle& bundle) {
+  std::vector<CookedAsset> assets;
   for (std::size_t a = 0; a < bundle.asset_count(); ++a) {
     const rt::Asset asset = bundle.asset(a);
-    json pieces = json::array(), levels = json::array();
+    CookedAsset& cooked = assets.emplace_back();
+    cooked.name = cooked.source = std::string(asset.name());
+    cooked.image_width = static_cast<int>(asset.image_width());
+    cooked.image_height = static_cast<int>(asset.image_height());
+    cooked.pixels_per_unit = shortest_double(asset.pixels_per_unit());
+    const rt::Vec2 pivot = asset.pivot();
+    cooked.pivot = Vec2{shortest_double(pivot.x), shortest_double(pivot.y)};
+    cooked.transform =
+        Transform{1.0 / cooked.pixels_per_unit,
+                  Vec2{cooked.pivot.x * cooked.image_width, cooked.pivot.y * cooked.image_height},
+                  asset.flip_y()};
+    cooked.measure = asset.measure();
+    cooked.quantization_error = shortest_double(asset.quantization_error());
     for (std::size_t l = 0; l < asset.level_count(); ++l) {
       const rt::Level level = asset.level(l);
-      json hulls = json::array();
+      CookedLevel& cooked_level = cooked.levels.emplace_back();
+      cooked_level.tau = shortest_double(level.tau());
       for (std::size_t h = 0; h < level.hull_count(); ++h) {
-        hulls.push_back(hull_json(level.hull(h)));
-        if (l == 0) pieces.push_back({{"hull", hulls.back()}});
+        Ring& ring = cooked_level.hulls.emplace_back();
+        const rt::Hull hull = level.hull(h);
+        for (std::size_t i = 0; i < hull.vertex_count(); ++i) {
+          const rt::Vec2 v = hull.vertex(i);
+          ring.push_back(Vec2{shortest_double(v.x), shortest_double(v.y)});
+        }
+        if (l == 0) cooked.pieces.push_back(CookedPiece{Region{ring, {}}, ring, 0.0});
       }
-      levels.push_back({{"tau", shortest_double(level.tau())}, {"hulls", std::move(hulls)}});
     }
-    const double ppu = shortest_double(asset.pixels_per_unit());
-    const rt::Vec2 pivot = asset.pivot();
-    json entry = {
-        {"name", std::string(asset.name())},
-        {"source", std::string(asset.name())},
-        {"transform",
-         {{"scale", 1.0 / ppu},
-          {"origin",
-           {shortest_double(pivot.x) * asset.image_width(),
-            shortest_double(pivot.y) * asset.image_height()}},
-          {"flip_y", asset.flip_y()}}},
-        {"tau", shortest_double(asset.level(0).tau())},
-        {"measure", asset.measure()},
-        {"regions", json::array()},
-        {"pieces", pieces},
-        {"levels", std::move(levels)},
-        {"image_size", {asset.image_width(), asset.image_height()}},
-        {"pixels_per_unit", ppu},
-        {"pivot", {shortest_double(pivot.x), shortest_double(pivot.y)}},
-        {"quantization_error", shortest_double(asset.quantization_error())},
-        {"stats", {{"pieces", pieces.size()}}},
-    };
+    if (!cooked.levels.empty()) cooked.tau = cooked.levels.front().tau;
+    cooked.stats.pieces = cooked.pieces.size();
     if (asset.has_physics()) {
       const rt::Physics p = asset.physics();
-      entry["physics"] = {{"density", shortest_double(p.density)},
-                          {"friction", shortest_double(p.friction)},
-                          {"restitution", shortest_double(p.restitution)},
-                          {"sensor", p.sensor},
-                          {"category_bits", p.category_bits},
-                          {"mask_bits", p.mask_bits}};
+      cooked.physics = PhysicsProperties{p.density, p.friction,      p.restitution,
+                                         p.sensor,  p.category_bits, p.mask_bits};
     }
-    assets.push_back(std::move(entry));
   }
-  return {{"hullcook", 1}, {"assets", std::move(assets)}};
+  return assets;
 }
 
 int inspect_bundle(const std::filesystem::path& path, bool json_output) {
@@ -168,7 +147,7 @@ int inspect_bundle(const std::filesystem::path& path, bool json_output) {
     return 2;
   }
   if (json_output) {
-    std::cout << debug_json(bundle).dump(2) << "\n";
+    std::cout << debug_json(cooked_assets(bundle));
   } else {
     print_text(path, bundle);
   }

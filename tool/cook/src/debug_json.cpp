@@ -139,16 +139,20 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
       out += "]}";
     }
     out += "]";
+    out += ",\n   \"pixels_per_unit\": ";
+    json.number(asset.pixels_per_unit);
+    out += ", \"pivot\": ";
+    json.point(asset.pivot);
     if (asset.image_width > 0) {
-      out += ",\n   \"image\": {\"width\": ";
+      out += ", \"image\": {\"width\": ";
       json.integer(static_cast<std::size_t>(asset.image_width));
       out += ", \"height\": ";
       json.integer(static_cast<std::size_t>(asset.image_height));
-      out += ", \"pixels_per_unit\": ";
-      json.number(asset.pixels_per_unit);
-      out += ", \"pivot\": ";
-      json.point(asset.pivot);
       out += "}";
+    }
+    if (asset.quantization_error) {
+      out += ", \"quantization_error\": ";
+      json.number(*asset.quantization_error);
     }
     if (asset.physics) {
       const PhysicsProperties& physics = *asset.physics;

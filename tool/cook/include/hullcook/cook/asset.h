@@ -72,6 +72,7 @@ struct CookedAsset {
   std::vector<CookedPiece> pieces;  // the finest level, with components
   std::vector<CookedLevel> levels;  // finest first; levels[0] holds the pieces' hulls
   std::optional<PhysicsProperties> physics;
+  std::optional<double> quantization_error;  // [output units] when read back from a bundle
   std::vector<std::string> warnings;
   CookedStats stats;
 };

@@ -10,9 +10,10 @@ namespace hullcook {
 
 // {"hullcook": 1, "assets": [...]} with coordinates in output units, printed with %.17g so they
 // round-trip a double. Besides issue 3's fields, each asset carries "levels" ([{tau, hulls}],
-// finest first, hulls after the engine limits), "image" ({width, height, pixels_per_unit,
-// pivot}) for traced images, "physics" when the asset has properties, "warnings" when there are
-// any, and stats.traced_vertices and stats.trace_ms. Deterministic but for the *_ms timings.
+// finest first, hulls after the engine limits), "pixels_per_unit" and "pivot", "image"
+// ({width, height}) for traced images, "quantization_error" for hulls read back from a bundle,
+// "physics" when the asset has properties, "warnings" when there are any, and
+// stats.traced_vertices and stats.trace_ms. Deterministic but for the *_ms timings.
 std::string debug_json(const std::vector<CookedAsset>& assets);
 
 }  // namespace hullcook
