@@ -3,6 +3,7 @@
 #include "synthetic_assets.h"
 
 #include "hullcook/cook/bundle_writer.h"
+#include "hullcook/cook/cook.h"
 #include "hullcook/core/error.h"
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
@@ -303,6 +304,31 @@ TEST(Golden, WriterReproducesTheCurrentVersionByteForByte) {
   ASSERT_TRUE(fs::exists(golden)) << golden << " is missing; run with HULLCOOK_UPDATE_GOLDEN=1";
   EXPECT_TRUE(read_file(golden) == bytes)
       << golden << " differs from the writer's output: a format change needs a new version";
+}
+
+// The settings of tests/formats/golden/v*/sprites.hcb: every sample sprite, τ = 2 px with an
+// 8 px level of detail, 32 px per unit.
+Settings golden_sprite_settings() {
+  Settings settings;
+  settings.tau = Tolerance{2.0, false};
+  settings.lods = {Tolerance{8.0, false}};
+  settings.pixels_per_unit = 32;
+  return settings;
+}
+
+TEST(Golden, RecookingTheSamplesReproducesTheGoldenBundle) {
+  const fs::path golden = kGoldenDir / "v1.0/sprites.hcb";
+  const CookResult result =
+      cook({fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites"}, golden_sprite_settings());
+  const std::string bytes = write_bundle(result.assets);
+  if (const char* update = std::getenv("HULLCOOK_UPDATE_GOLDEN");
+      update && std::string(update) == "1") {
+    std::ofstream(golden, std::ios::binary) << bytes;
+    GTEST_SKIP() << "rewrote " << golden;
+  }
+  ASSERT_TRUE(fs::exists(golden)) << golden << " is missing; run with HULLCOOK_UPDATE_GOLDEN=1";
+  EXPECT_TRUE(read_file(golden) == bytes)
+      << golden << " differs from a re-cook of samples/sprites: the cooker's output changed";
 }
 
 TEST(Golden, ReaderAcceptsEveryGoldenFileOfEverySupportedVersion) {
