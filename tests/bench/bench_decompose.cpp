@@ -451,7 +451,7 @@ std::vector<double> axis_ticks(double low, double high, bool log_axis) {
 std::string line_plot_svg(const std::string& title, const std::string& x_label,
                           const std::string& y_label, const std::vector<double>& xs,
                           const std::vector<Series>& series, bool log_y) {
-  const double width = 560, height = 340, left = 70, right = 110, top = 34, bottom = 50;
+  const double width = 600, height = 340, left = 70, right = 150, top = 34, bottom = 50;
   const double plot_w = width - left - right, plot_h = height - top - bottom;
   double x_low = *std::min_element(xs.begin(), xs.end()),
          x_high = *std::max_element(xs.begin(), xs.end());
