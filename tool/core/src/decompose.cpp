@@ -55,7 +55,16 @@ struct OuterConcavity {
   std::vector<double> depth;
   double value = 0.0;           // decides splitting (for H2: the H1 value, see decompose.h)
   std::size_t witness = kNone;  // the notch with the largest vertex value
+  std::vector<char> on_hull;    // per vertex: a hull vertex or exactly on a hull edge
 };
+
+// What a child ring inherits from its parent's hull, per vertex. The parent's hull points that
+// the child keeps stay on the child's hull, and a parent pocket kept whole by the child cannot
+// hold a vertex of the child's hull: the ray leaving such a vertex outward would cross the pocket
+// chain (a point of the child) or the bridge (between two points of the child). So only the runs
+// at the child's two ends (cut open pockets) need a fresh look.
+enum HullHintCode : signed char { kFresh = 0, kParentHullPoint = 1, kInsideKeptPocket = 2 };
+using HullHint = std::vector<signed char>;  // empty: nothing inherited
 
 bool is_notch(const Ring& ring, std::size_t i) {
   const std::size_t n = ring.size();
@@ -81,22 +90,63 @@ struct PocketKeyHash {
 };
 using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
 
-OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
-                             PocketCache* cache = nullptr) {
+// The hull of a ring, using what a hint inherits (see HullHint). Sets on_hull: hull vertices and
+// the vertices exactly on a hull edge (they split its bridge, so every pocket stays simple).
+std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
+                                        std::vector<char>& on_hull) {
   const std::size_t n = ring.size();
-  OuterConcavity result;
-  result.vertex.assign(n, 0.0);
-  std::vector<std::size_t> hull = simple_polygon_hull_indices(ring);
-  if (hull.size() < 3) return result;
-  std::vector<char> on_hull(n, 0);
+  // The inherited range [known_first, known_last], both ends parent hull points.
+  std::size_t known_first = n, known_last = 0;
+  std::vector<std::size_t> hull;
+  if (hint && hint->size() == n) {
+    std::vector<std::size_t> candidates;
+    for (std::size_t k = 0; k < n; ++k) {
+      const signed char code = (*hint)[k];
+      if (code == kInsideKeptPocket) continue;
+      candidates.push_back(k);
+      if (code == kParentHullPoint) {
+        known_first = std::min(known_first, k);
+        known_last = k;
+      }
+    }
+    if (candidates.size() * 2 < n) {
+      Ring points;
+      points.reserve(candidates.size());
+      for (std::size_t k : candidates) points.push_back(ring[k]);
+      hull = convex_hull_indices(points);
+      for (std::size_t& h : hull) h = candidates[h];
+    } else {
+      hull = simple_polygon_hull_indices(ring);
+    }
+  } else {
+    hull = simple_polygon_hull_indices(ring);
+  }
+  if (hull.size() < 3) return hull;
+  on_hull.assign(n, 0);
   for (std::size_t h : hull) on_hull[h] = 1;
-  // Vertices exactly on a hull edge split its bridge, so every pocket polygon stays simple.
   for (std::size_t k = 0; k < hull.size(); ++k) {
     const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
+    if (known_first <= s && s < t && t <= known_last) {
+      // A parent hull edge (no parent hull vertex between s and t would be missing from the
+      // child's hull): its points are the parent's.
+      for (std::size_t i = s + 1; i < t; ++i) on_hull[i] = (*hint)[i] == kParentHullPoint;
+      continue;
+    }
     for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n)) {
       if (detail::fast_orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
     }
   }
+  return hull;
+}
+
+OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
+                             PocketCache* cache = nullptr, const HullHint* hint = nullptr) {
+  const std::size_t n = ring.size();
+  OuterConcavity result;
+  result.vertex.assign(n, 0.0);
+  const std::vector<std::size_t> hull = hull_with_hint(ring, hint, result.on_hull);
+  if (hull.size() < 3) return result;
+  const std::vector<char>& on_hull = result.on_hull;
   std::size_t start = 0;
   while (!on_hull[start]) ++start;
   std::vector<Vec2> chain;
@@ -426,23 +476,80 @@ class RegionView {
   mutable EdgeRef last_blocker_{-1, 0};
 };
 
-// Cuts the outer ring along the diagonal i-j; holes go to the piece containing them.
-std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::size_t j) {
-  const Ring& ring = region.outer;
+// The chain of ring from first to last (cyclic), cleaned of the repeated and collinear vertices
+// the cut leaves at its seam, and the ring index each kept vertex came from. The ring is clean,
+// so remove_degenerate_vertices_in_place would only ever remove vertices at the seam: this does
+// the same removals without looking at every vertex.
+void cut_chain(const Ring& ring, std::size_t first, std::size_t last, Ring& out,
+               std::vector<std::size_t>& source) {
   const std::size_t n = ring.size();
+  const std::size_t count = (last + n - first) % n + 1;
+  out.reserve(count);
+  source.reserve(count);
+  for (std::size_t k = first;; k = next_index(k, n)) {
+    out.push_back(ring[k]);
+    source.push_back(k);
+    if (k == last) break;
+  }
+  std::size_t front = 0;  // vertices erased at the front, done by one shift at the end
+  auto size = [&] { return out.size() - front; };
+  auto at = [&](std::size_t k) { return out[front + k]; };
+  bool changed = true;
+  while (changed && size() >= 3) {
+    changed = false;
+    const std::size_t m = size();
+    if (at(m - 1) == at(0) || detail::fast_orientation(at(m - 2), at(m - 1), at(0)) == 0) {
+      out.pop_back();
+      source.pop_back();
+      changed = true;
+    } else if (detail::fast_orientation(at(m - 1), at(0), at(1)) == 0) {
+      ++front;
+      changed = true;
+    }
+  }
+  if (front > 0) {
+    out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(front));
+    source.erase(source.begin(), source.begin() + static_cast<std::ptrdiff_t>(front));
+  }
+  if (out.size() == 2 && out[0] == out[1]) {
+    out.pop_back();
+    source.pop_back();
+  }
+}
+
+// The hint (see HullHint) of a child whose vertex k came from the parent's vertex source[k].
+HullHint child_hint(const std::vector<char>& parent_on_hull,
+                    const std::vector<std::size_t>& source) {
+  HullHint hint;
+  if (parent_on_hull.empty()) return hint;
+  std::size_t known_first = source.size(), known_last = 0;
+  for (std::size_t k = 0; k < source.size(); ++k) {
+    if (parent_on_hull[source[k]]) {
+      known_first = std::min(known_first, k);
+      known_last = k;
+    }
+  }
+  if (known_first == source.size()) return hint;
+  hint.assign(source.size(), kFresh);
+  for (std::size_t k = known_first; k <= known_last; ++k) {
+    hint[k] = parent_on_hull[source[k]] ? kParentHullPoint : kInsideKeptPocket;
+  }
+  return hint;
+}
+
+// Cuts the outer ring along the diagonal i-j; holes go to the piece containing them. Fills the
+// children's hull hints from the parent's hull points.
+std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::size_t j,
+                                      const std::vector<char>& on_hull,
+                                      std::pair<HullHint, HullHint>& hints) {
+  const Ring& ring = region.outer;
   Region first, second;
-  first.outer.reserve((j + n - i) % n + 1);
-  second.outer.reserve((i + n - j) % n + 1);
-  for (std::size_t k = i;; k = next_index(k, n)) {
-    first.outer.push_back(ring[k]);
-    if (k == j) break;
-  }
-  for (std::size_t k = j;; k = next_index(k, n)) {
-    second.outer.push_back(ring[k]);
-    if (k == i) break;
-  }
-  remove_degenerate_vertices_in_place(first.outer);
-  remove_degenerate_vertices_in_place(second.outer);
+  std::vector<std::size_t> source;
+  cut_chain(ring, i, j, first.outer, source);
+  hints.first = child_hint(on_hull, source);
+  source.clear();
+  cut_chain(ring, j, i, second.outer, source);
+  hints.second = child_hint(on_hull, source);
   for (const Ring& hole : region.holes) {
     (locate_point(first.outer, hole[0]) == Location::inside ? first : second).holes.push_back(hole);
   }
@@ -490,10 +597,10 @@ struct Evaluation {
   int deepest_hole = -1;
 };
 
-Evaluation evaluate(const Region& region, Measure measure, double tau,
-                    PocketCache* cache = nullptr) {
+Evaluation evaluate(const Region& region, Measure measure, double tau, PocketCache* cache = nullptr,
+                    const HullHint* hint = nullptr) {
   Evaluation e;
-  e.outer = measure_outer(region.outer, measure, tau, cache);
+  e.outer = measure_outer(region.outer, measure, tau, cache, hint);
   e.value = e.outer.value;
   if (!region.holes.empty()) {
     e.holes = measure_holes(region, e.outer);
@@ -569,7 +676,8 @@ double provisional_distance(Vec2 a, Vec2 b) {
 std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
                                                        std::size_t r,
-                                                       const DecomposeSettings& settings) {
+                                                       const DecomposeSettings& settings,
+                                                       std::pair<HullHint, HullHint>& hints) {
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
   const RegionView view(region);
@@ -597,7 +705,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   auto is_valid = [&](std::size_t i) { return view.is_diagonal({0, r}, {0, i}); };
   if (const auto chosen = first_accepted_by_score(
           resolving, [&](std::size_t i) { return eq8(i, distance(pr, ring[i])); }, is_valid)) {
-    return split_outer(region, r, *chosen);
+    return split_outer(region, r, *chosen, concavity.on_hull, hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
   for (std::size_t i : other_indices) {
@@ -607,7 +715,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   }
   if (const auto chosen = first_accepted(
           others, scores_before, [&](const ScoredVertex& c) { return is_valid(c.index); })) {
-    return split_outer(region, r, chosen->index);
+    return split_outer(region, r, chosen->index, concavity.on_hull, hints);
   }
   return std::nullopt;
 }
@@ -695,12 +803,16 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
   PocketCache cache;
+  std::vector<HullHint> hints(1);  // per node
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
     // Valid until the children are appended below (nodes_ may then reallocate).
     const Region& component = tree.nodes_[std::size_t(id)].component;
-    const Evaluation e = evaluate(component, settings.measure, settings.tau, &cache);
+    const Evaluation e =
+        evaluate(component, settings.measure, settings.tau, &cache, &hints[std::size_t(id)]);
+    hints[std::size_t(id)] = HullHint();
+    std::pair<HullHint, HullHint> child_hints;
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;
     std::optional<std::pair<Region, Region>> parts;
@@ -717,13 +829,15 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
       }
       witness = {component.holes[h][e.holes[h].joined], static_cast<int>(h)};
     } else if (e.outer.witness != kNone) {
-      parts = resolve_notch(component, e.outer, e.outer.witness, settings);
+      parts = resolve_notch(component, e.outer, e.outer.witness, settings, child_hints);
       witness = {component.outer[e.outer.witness], -1};
     }
     if (!parts) continue;  // cannot happen on a valid region; keep the node whole
     const int first = static_cast<int>(tree.nodes_.size());
     tree.nodes_.push_back({std::move(parts->first), 0.0, {}, {-1, -1}});
     tree.nodes_.push_back({std::move(parts->second), 0.0, {}, {-1, -1}});
+    hints.push_back(std::move(child_hints.first));
+    hints.push_back(std::move(child_hints.second));
     auto& node = tree.nodes_[std::size_t(id)];
     node.witness = witness;
     node.children[0] = first;
