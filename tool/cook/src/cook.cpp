@@ -157,6 +157,7 @@ struct PreparedInput {
   std::size_t traced_vertices = 0;
   double enclosing_radius = 0;  // [input units]
   std::vector<std::string> warnings;
+  double decode_ms = 0;
   double trace_ms = 0;
 };
 
@@ -180,6 +181,8 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   auto start = Clock::now();
   PreparedInput prepared;
   AlphaImage image = load_alpha(file.path, trace_settings(settings, 0));
+  prepared.decode_ms = milliseconds_since(start);
+  start = Clock::now();
   prepared.width = image.width;
   prepared.height = image.height;
   double simplify = settings.simplify.value_or(0);
@@ -275,6 +278,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   asset.physics = physics_for(file.path, settings);
   asset.warnings = std::move(input.warnings);
   asset.stats.traced_vertices = input.traced_vertices;
+  asset.stats.decode_ms = input.decode_ms;
   asset.stats.trace_ms = input.trace_ms;
 
   std::vector<Region> regions;

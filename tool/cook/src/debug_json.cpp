@@ -188,6 +188,8 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
     json.number(asset.stats.decompose_ms);
     out += ", \"traced_vertices\": ";
     json.integer(asset.stats.traced_vertices);
+    out += ", \"decode_ms\": ";
+    json.number(asset.stats.decode_ms);
     out += ", \"trace_ms\": ";
     json.number(asset.stats.trace_ms);
     out += "}}";
