@@ -1,6 +1,7 @@
 #include "hullcook/cook/bundle_writer.h"
 
 #include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
 
@@ -52,15 +53,6 @@ std::vector<GridPoint> strict_convex_hull(std::vector<GridPoint> points) {
   return hull;
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double length2 = ab.x * ab.x + ab.y * ab.y;
-  double t = length2 > 0.0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const Vec2 d = p - (a + ab * t);
-  return std::sqrt(d.x * d.x + d.y * d.y);
-}
-
 // Distance from p to the region bounded by ring (0 inside), for any simple ring.
 double distance_to_polygon(Vec2 p, const Ring& ring) {
   bool inside = false;
@@ -69,7 +61,7 @@ double distance_to_polygon(Vec2 p, const Ring& ring) {
     const Vec2 a = ring[j], b = ring[i];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
       inside = !inside;
-    best = std::min(best, segment_distance(p, a, b));
+    best = std::min(best, point_segment_distance(p, a, b));
   }
   return inside ? 0.0 : best;
 }
