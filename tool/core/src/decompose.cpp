@@ -55,7 +55,7 @@ struct OuterConcavity {
   std::vector<double> depth;
   double value = 0.0;           // decides splitting (for H2: the H1 value, see decompose.h)
   std::size_t witness = kNone;  // the notch with the largest vertex value
-  std::vector<char> on_hull;    // per vertex: a hull vertex or exactly on a hull edge
+  std::vector<char> on_hull;    // per vertex: 2 a hull vertex, 1 exactly on a hull edge, else 0
 };
 
 // What a child ring inherits from its parent's hull, per vertex. The parent's hull points that
@@ -63,7 +63,15 @@ struct OuterConcavity {
 // hold a vertex of the child's hull: the ray leaving such a vertex outward would cross the pocket
 // chain (a point of the child) or the bridge (between two points of the child). So only the runs
 // at the child's two ends (cut open pockets) need a fresh look.
-enum HullHintCode : signed char { kFresh = 0, kParentHullPoint = 1, kInsideKeptPocket = 2 };
+// The ring that replaces every kept pocket by its bridge, without the parent's collinear hull
+// points, is simple (the child plus its kept pockets) and has the child's hull: Melkman's linear
+// hull runs on it.
+enum HullHintCode : signed char {
+  kFresh = 0,
+  kParentHullPoint = 1,  // exactly on a parent hull edge
+  kInsideKeptPocket = 2,
+  kParentHullVertex = 3,
+};
 using HullHint = std::vector<signed char>;  // empty: nothing inherited
 
 bool is_notch(const Ring& ring, std::size_t i) {
@@ -100,30 +108,32 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
   std::vector<std::size_t> hull;
   if (hint && hint->size() == n) {
     std::vector<std::size_t> candidates;
+    candidates.reserve(n + 1);
     for (std::size_t k = 0; k < n; ++k) {
       const signed char code = (*hint)[k];
-      if (code == kInsideKeptPocket) continue;
-      candidates.push_back(k);
-      if (code == kParentHullPoint) {
+      if (code == kFresh || code == kParentHullVertex) candidates.push_back(k);
+      if (code == kParentHullPoint || code == kParentHullVertex) {
+        // The range's end points stay even when collinear: the reduced ring keeps its shape.
+        if (code == kParentHullPoint && known_first == n) candidates.push_back(k);
         known_first = std::min(known_first, k);
         known_last = k;
       }
     }
-    if (candidates.size() * 2 < n) {
-      Ring points;
-      points.reserve(candidates.size());
-      for (std::size_t k : candidates) points.push_back(ring[k]);
-      hull = convex_hull_indices(points);
-      for (std::size_t& h : hull) h = candidates[h];
-    } else {
-      hull = simple_polygon_hull_indices(ring);
+    if (known_last > known_first && (*hint)[known_last] == kParentHullPoint) {
+      candidates.push_back(known_last);
+      std::sort(candidates.begin(), candidates.end());
     }
+    Ring points;
+    points.reserve(candidates.size());
+    for (std::size_t k : candidates) points.push_back(ring[k]);
+    hull = simple_polygon_hull_indices(points);
+    for (std::size_t& h : hull) h = candidates[h];
   } else {
     hull = simple_polygon_hull_indices(ring);
   }
   if (hull.size() < 3) return hull;
   on_hull.assign(n, 0);
-  for (std::size_t h : hull) on_hull[h] = 1;
+  for (std::size_t h : hull) on_hull[h] = 2;
   for (std::size_t k = 0; k < hull.size(); ++k) {
     const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
     if (known_first <= s && s < t && t <= known_last) {
@@ -532,7 +542,10 @@ HullHint child_hint(const std::vector<char>& parent_on_hull,
   if (known_first == source.size()) return hint;
   hint.assign(source.size(), kFresh);
   for (std::size_t k = known_first; k <= known_last; ++k) {
-    hint[k] = parent_on_hull[source[k]] ? kParentHullPoint : kInsideKeptPocket;
+    const char on_hull = parent_on_hull[source[k]];
+    hint[k] = on_hull == 2   ? kParentHullVertex
+              : on_hull == 1 ? kParentHullPoint
+                             : kInsideKeptPocket;
   }
   return hint;
 }
@@ -693,6 +706,8 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   Vec2 bisector = -(in_a + in_b);
   if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
   std::vector<std::size_t> other_indices;
+  resolving.reserve(n);
+  other_indices.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (i == r || i == next_index(r, n) || i == prev_index(r, n)) continue;
     const Vec2 x = ring[i];
