@@ -1,13 +1,24 @@
-// Writes the hand-made sample assets as .gltf, .glb and Draco .glb/.gltf files into a directory,
-// for the Khronos glTF validator run (run_validator.sh).
+// Writes the hand-made sample assets and the cooked sample sprites as .gltf, .glb and Draco
+// .glb/.gltf files into a directory, for the Khronos glTF validator run (run_validator.sh).
 #include "sample_assets.h"
 
+#include "hullcook/cook/cook.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/cook/output_file.h"
 
 #include <exception>
 #include <filesystem>
 #include <iostream>
+
+// Every sample sprite, cooked as scripts/cook-samples does: real outlines, three levels.
+std::vector<hullcook::CookedAsset> sprites_cooked_like_cook_samples() {
+  hullcook::Settings settings;
+  settings.tau = hullcook::Tolerance{2.0, false};
+  settings.lods = {hullcook::Tolerance{8.0, false}, hullcook::Tolerance{0.5, false}};
+  settings.pixels_per_unit = 32;
+  return hullcook::cook({std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites"}, settings)
+      .assets;
+}
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -28,6 +39,7 @@ int main(int argc, char** argv) {
         {"physics", {test::physics_asset(), test::sensor_asset()}},
         {"empty", {test::empty_asset()}},
         {"nothing", {}},
+        {"sprites", sprites_cooked_like_cook_samples()},
     };
     for (const Set& set : sets) {
       for (bool draco : {false, true}) {
