@@ -527,6 +527,14 @@ void cut_chain(const Ring& ring, std::size_t first, std::size_t last, Ring& out,
   }
 }
 
+// Whether p lies in the first of two pieces cut from a region, for a point strictly inside the
+// region and off the cuts (a vertex of a hole the cuts do not touch): it lies inside exactly one
+// piece, so only the smaller ring is searched.
+bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
+  if (first.size() <= second.size()) return locate_point(first, p) == Location::inside;
+  return locate_point(second, p) != Location::inside;
+}
+
 // The hint (see HullHint) of a child whose vertex k came from the parent's vertex source[k].
 HullHint child_hint(const std::vector<char>& parent_on_hull,
                     const std::vector<std::size_t>& source) {
@@ -564,7 +572,7 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   cut_chain(ring, j, i, second.outer, source);
   hints.second = child_hint(on_hull, source);
   for (const Ring& hole : region.holes) {
-    (locate_point(first.outer, hole[0]) == Location::inside ? first : second).holes.push_back(hole);
+    (in_first_piece(first.outer, second.outer, hole[0]) ? first : second).holes.push_back(hole);
   }
   return {std::move(first), std::move(second)};
 }
@@ -597,8 +605,7 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];
-    (locate_point(first.outer, other[0]) == Location::inside ? first : second)
-        .holes.push_back(other);
+    (in_first_piece(first.outer, second.outer, other[0]) ? first : second).holes.push_back(other);
   }
   return {std::move(first), std::move(second)};
 }
