@@ -81,8 +81,11 @@ bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
 bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const int o1 = detail::fast_orientation(a, b, c);
   const int o2 = detail::fast_orientation(a, b, d);
+  // c and d strictly on one side of ab's line: no common point (the usual answer, decided early).
+  if (o1 * o2 > 0) return false;
   const int o3 = detail::fast_orientation(c, d, a);
   const int o4 = detail::fast_orientation(c, d, b);
+  if (o3 * o4 > 0) return false;
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
   auto within_box = [](Vec2 p, Vec2 q, Vec2 r) {
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
