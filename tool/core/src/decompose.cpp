@@ -712,17 +712,16 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   in_b /= std::hypot(in_b.x, in_b.y);
   Vec2 bisector = -(in_a + in_b);
   if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
-  std::vector<std::size_t> other_indices;
+  const std::size_t after_r = next_index(r, n), before_r = prev_index(r, n);
+  auto is_candidate = [&](std::size_t i) { return i != r && i != after_r && i != before_r; };
+  auto resolves = [&](Vec2 x) {
+    return detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0;
+  };
   resolving.reserve(n);
-  other_indices.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (i == r || i == next_index(r, n) || i == prev_index(r, n)) continue;
+    if (!is_candidate(i)) continue;
     const Vec2 x = ring[i];
-    if (detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0) {
-      resolving.push_back({eq8(i, provisional_distance(pr, x)), i});
-    } else {
-      other_indices.push_back(i);
-    }
+    if (resolves(x)) resolving.push_back({eq8(i, provisional_distance(pr, x)), i});
   }
   auto is_valid = [&](std::size_t i) { return view.is_diagonal({0, r}, {0, i}); };
   if (const auto chosen = first_accepted_by_score(
@@ -730,8 +729,9 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return split_outer(region, r, *chosen, concavity.on_hull, hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
-  for (std::size_t i : other_indices) {
+  for (std::size_t i = 0; i < n; ++i) {
     const Vec2 x = ring[i];
+    if (!is_candidate(i) || resolves(x)) continue;
     const Vec2 d = (x - pr) / distance(pr, x);
     others.push_back({d.x * bisector.x + d.y * bisector.y, i});
   }
