@@ -123,11 +123,15 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
       candidates.push_back(known_last);
       std::sort(candidates.begin(), candidates.end());
     }
-    Ring points;
-    points.reserve(candidates.size());
-    for (std::size_t k : candidates) points.push_back(ring[k]);
-    hull = simple_polygon_hull_indices(points);
-    for (std::size_t& h : hull) h = candidates[h];
+    if (candidates.size() * 4 < n * 3) {
+      Ring points;
+      points.reserve(candidates.size());
+      for (std::size_t k : candidates) points.push_back(ring[k]);
+      hull = simple_polygon_hull_indices(points);
+      for (std::size_t& h : hull) h = candidates[h];
+    } else {
+      hull = simple_polygon_hull_indices(ring);  // little to skip: not worth the copy
+    }
   } else {
     hull = simple_polygon_hull_indices(ring);
   }
@@ -487,18 +491,14 @@ class RegionView {
 };
 
 // The chain of ring from first to last (cyclic), cleaned of the repeated and collinear vertices
-// the cut leaves at its seam, and the ring index each kept vertex came from. The ring is clean,
-// so remove_degenerate_vertices_in_place would only ever remove vertices at the seam: this does
-// the same removals without looking at every vertex.
-void cut_chain(const Ring& ring, std::size_t first, std::size_t last, Ring& out,
-               std::vector<std::size_t>& source) {
+// the cut leaves at its seam. The ring is clean, so remove_degenerate_vertices_in_place would
+// only ever remove vertices at the seam: this does the same removals without looking at every
+// vertex. Returns the ring index of the chain's first kept vertex (the rest follow in order).
+std::size_t cut_chain(const Ring& ring, std::size_t first, std::size_t last, Ring& out) {
   const std::size_t n = ring.size();
-  const std::size_t count = (last + n - first) % n + 1;
-  out.reserve(count);
-  source.reserve(count);
+  out.reserve((last + n - first) % n + 1);
   for (std::size_t k = first;; k = next_index(k, n)) {
     out.push_back(ring[k]);
-    source.push_back(k);
     if (k == last) break;
   }
   std::size_t front = 0;  // vertices erased at the front, done by one shift at the end
@@ -510,21 +510,15 @@ void cut_chain(const Ring& ring, std::size_t first, std::size_t last, Ring& out,
     const std::size_t m = size();
     if (at(m - 1) == at(0) || detail::fast_orientation(at(m - 2), at(m - 1), at(0)) == 0) {
       out.pop_back();
-      source.pop_back();
       changed = true;
     } else if (detail::fast_orientation(at(m - 1), at(0), at(1)) == 0) {
       ++front;
       changed = true;
     }
   }
-  if (front > 0) {
-    out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(front));
-    source.erase(source.begin(), source.begin() + static_cast<std::ptrdiff_t>(front));
-  }
-  if (out.size() == 2 && out[0] == out[1]) {
-    out.pop_back();
-    source.pop_back();
-  }
+  if (front > 0) out.erase(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(front));
+  if (out.size() == 2 && out[0] == out[1]) out.pop_back();
+  return (first + front) % n;
 }
 
 // Whether p lies in the first of two pieces cut from a region, for a point strictly inside the
@@ -535,22 +529,25 @@ bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
   return locate_point(second, p) != Location::inside;
 }
 
-// The hint (see HullHint) of a child whose vertex k came from the parent's vertex source[k].
-HullHint child_hint(const std::vector<char>& parent_on_hull,
-                    const std::vector<std::size_t>& source) {
+// The hint (see HullHint) of a child of size vertices whose vertex k is the parent's vertex
+// (source_first + k) % parent_on_hull.size().
+HullHint child_hint(const std::vector<char>& parent_on_hull, std::size_t source_first,
+                    std::size_t size) {
   HullHint hint;
-  if (parent_on_hull.empty()) return hint;
-  std::size_t known_first = source.size(), known_last = 0;
-  for (std::size_t k = 0; k < source.size(); ++k) {
-    if (parent_on_hull[source[k]]) {
+  const std::size_t n = parent_on_hull.size();
+  if (n == 0) return hint;
+  std::size_t known_first = size, known_last = 0;
+  for (std::size_t k = 0, i = source_first; k < size; ++k, i = next_index(i, n)) {
+    if (parent_on_hull[i]) {
       known_first = std::min(known_first, k);
       known_last = k;
     }
   }
-  if (known_first == source.size()) return hint;
-  hint.assign(source.size(), kFresh);
-  for (std::size_t k = known_first; k <= known_last; ++k) {
-    const char on_hull = parent_on_hull[source[k]];
+  if (known_first == size) return hint;
+  hint.assign(size, kFresh);
+  for (std::size_t k = known_first, i = (source_first + known_first) % n; k <= known_last;
+       ++k, i = next_index(i, n)) {
+    const char on_hull = parent_on_hull[i];
     hint[k] = on_hull == 2   ? kParentHullVertex
               : on_hull == 1 ? kParentHullPoint
                              : kInsideKeptPocket;
@@ -565,12 +562,10 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
                                       std::pair<HullHint, HullHint>& hints) {
   const Ring& ring = region.outer;
   Region first, second;
-  std::vector<std::size_t> source;
-  cut_chain(ring, i, j, first.outer, source);
-  hints.first = child_hint(on_hull, source);
-  source.clear();
-  cut_chain(ring, j, i, second.outer, source);
-  hints.second = child_hint(on_hull, source);
+  const std::size_t first_source = cut_chain(ring, i, j, first.outer);
+  hints.first = child_hint(on_hull, first_source, first.outer.size());
+  const std::size_t second_source = cut_chain(ring, j, i, second.outer);
+  hints.second = child_hint(on_hull, second_source, second.outer.size());
   for (const Ring& hole : region.holes) {
     (in_first_piece(first.outer, second.outer, hole[0]) ? first : second).holes.push_back(hole);
   }
