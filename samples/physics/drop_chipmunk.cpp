@@ -52,31 +52,6 @@ int main(int argc, char** argv) {
                         cpBodyIsSleeping(bodies[i]) == cpTrue);
   }
   std::printf("chipmunk: %zu bodies, %zu hulls altered by Chipmunk\n", placed.size(), altered);
-  cpSpaceEachShape(
-      space,
-      [](cpShape* shape, void* s) {
-        cpSpaceAddPostStepCallback(
-            static_cast<cpSpace*>(s),
-            [](cpSpace* sp, void* sh, void*) {
-              cpSpaceRemoveShape(sp, static_cast<cpShape*>(sh));
-              cpShapeFree(static_cast<cpShape*>(sh));
-            },
-            shape, nullptr);
-      },
-      space);
-  cpSpaceEachBody(
-      space,
-      [](cpBody* body, void* s) {
-        cpSpaceAddPostStepCallback(
-            static_cast<cpSpace*>(s),
-            [](cpSpace* sp, void* b, void*) {
-              cpSpaceRemoveBody(sp, static_cast<cpBody*>(b));
-              cpBodyFree(static_cast<cpBody*>(b));
-            },
-            body, nullptr);
-      },
-      space);
-  cpSpaceStep(space, 0.0);
-  cpSpaceFree(space);
+  hullcook::chipmunk::free_space_and_contents(space);
   return 0;
 }

@@ -28,34 +28,7 @@ struct Scene {
     cpSpaceSetIterations(space, 20);
     cpSpaceSetSleepTimeThreshold(space, 0.5);
   }
-  ~Scene() {
-    cpSpaceEachShape(
-        space,
-        [](cpShape* shape, void* s) {
-          cpSpaceAddPostStepCallback(
-              static_cast<cpSpace*>(s),
-              [](cpSpace* sp, void* sh, void*) {
-                cpSpaceRemoveShape(sp, static_cast<cpShape*>(sh));
-                cpShapeFree(static_cast<cpShape*>(sh));
-              },
-              shape, nullptr);
-        },
-        space);
-    cpSpaceEachBody(
-        space,
-        [](cpBody* body, void* s) {
-          cpSpaceAddPostStepCallback(
-              static_cast<cpSpace*>(s),
-              [](cpSpace* sp, void* b, void*) {
-                cpSpaceRemoveBody(sp, static_cast<cpBody*>(b));
-                cpBodyFree(static_cast<cpBody*>(b));
-              },
-              body, nullptr);
-        },
-        space);
-    cpSpaceStep(space, 0.0);  // runs the post-step removals
-    cpSpaceFree(space);
-  }
+  ~Scene() { hullcook::chipmunk::free_space_and_contents(space); }
 
   cpBody* body(const char* name, cpVect position, bool is_static,
                chipmunk::ShapeReport* out = nullptr) {

@@ -45,4 +45,35 @@ ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset
   return report;
 }
 
+void free_space_and_contents(cpSpace* space) {
+  if (!space) return;
+  // Removal inside the iteration is only allowed from post-step callbacks.
+  cpSpaceEachShape(
+      space,
+      [](cpShape* shape, void* s) {
+        cpSpaceAddPostStepCallback(
+            static_cast<cpSpace*>(s),
+            [](cpSpace* sp, void* sh, void*) {
+              cpSpaceRemoveShape(sp, static_cast<cpShape*>(sh));
+              cpShapeFree(static_cast<cpShape*>(sh));
+            },
+            shape, nullptr);
+      },
+      space);
+  cpSpaceEachBody(
+      space,
+      [](cpBody* body, void* s) {
+        cpSpaceAddPostStepCallback(
+            static_cast<cpSpace*>(s),
+            [](cpSpace* sp, void* b, void*) {
+              cpSpaceRemoveBody(sp, static_cast<cpBody*>(b));
+              cpBodyFree(static_cast<cpBody*>(b));
+            },
+            body, nullptr);
+      },
+      space);
+  cpSpaceStep(space, 0.0);  // runs the post-step removals
+  cpSpaceFree(space);
+}
+
 }  // namespace hullcook::chipmunk

@@ -39,4 +39,8 @@ struct ShapeOptions {
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
                        const runtime::Level& level, const ShapeOptions& options = {});
 
+// Removes and frees every shape and body in space, then space itself: Chipmunk's cpSpaceFree
+// frees neither. space may be null. Must not be called during cpSpaceStep.
+void free_space_and_contents(cpSpace* space);
+
 }  // namespace hullcook::chipmunk
