@@ -138,7 +138,10 @@ namespace {
 class Sidecar : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory = std::filesystem::temp_directory_path() / "hullcook_sidecar_test";
+    // ctest runs test cases in parallel: one directory per test.
+    directory = std::filesystem::temp_directory_path() /
+                (std::string("hullcook_sidecar_") +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(directory);
     std::filesystem::create_directories(directory);
     sprite = directory / "ice.png";

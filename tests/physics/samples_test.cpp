@@ -43,7 +43,9 @@ class DropSample : public ::testing::TestWithParam<const char*> {};
 TEST_P(DropSample, SpritesComeToRestOnTheTerrain) {
   const std::filesystem::path dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "tests/physics";
   std::filesystem::create_directories(dir);
-  const std::filesystem::path bundle = dir / "drop_scene.hcb";
+  // One file per engine: ctest runs the two cases in parallel.
+  const std::filesystem::path bundle =
+      dir / ("drop_scene_" + std::filesystem::path(GetParam()).filename().string() + ".hcb");
   std::ofstream(bundle, std::ios::binary) << test::scene_bundle();
   int exit_code = -1;
   const std::string output = run(std::string(GetParam()) + " " + bundle.string(), exit_code);
