@@ -12,12 +12,7 @@ int main(int argc, char** argv) {
   if (!samples::parse(argc, argv, options)) return 1;
   runtime::MappedFile file;
   runtime::Bundle bundle;
-  runtime::Status status = file.open(options.bundle_path);
-  if (status == runtime::Status::ok) status = bundle.open(file.data(), file.size());
-  if (status != runtime::Status::ok) {
-    std::fprintf(stderr, "%s: %s\n", options.bundle_path, runtime::status_string(status));
-    return 2;
-  }
+  if (!samples::open_bundle(options, file, bundle)) return 2;
   std::vector<samples::Placed> placed;
   const float floor_y = samples::lay_out(bundle, options, placed);
 

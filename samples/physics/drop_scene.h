@@ -82,6 +82,19 @@ inline bool is_terrain(const Options& options, const runtime::Asset& asset) {
   return name.find("terrain") != std::string::npos || name.find("ground") != std::string::npos;
 }
 
+// Maps and validates the bundle named on the command line; prints its status and returns false
+// when it cannot be used.
+inline bool open_bundle(const Options& options, runtime::MappedFile& file,
+                        runtime::Bundle& bundle) {
+  runtime::Status status = file.open(options.bundle_path);
+  if (status == runtime::Status::ok) status = bundle.open(file.data(), file.size());
+  if (status != runtime::Status::ok) {
+    std::fprintf(stderr, "%s: %s\n", options.bundle_path, runtime::status_string(status));
+    return false;
+  }
+  return true;
+}
+
 // Lays the bundle's assets out; returns the floor height [game units] below everything.
 inline float lay_out(const runtime::Bundle& bundle, const Options& options,
                      std::vector<Placed>& placed) {
