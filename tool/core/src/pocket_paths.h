@@ -8,13 +8,6 @@
 
 namespace hullcook::detail {
 
-// Triangulates a simple counter-clockwise polygon by ear clipping (exact predicates).
-// Returns n - 2 triangles as index triples, each counter-clockwise. When neighbours is given, it
-// receives per triangle the triangle across each edge (tri[e], tri[(e + 1) % 3]), or -1 across a
-// polygon edge.
-std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& polygon,
-                                            std::vector<std::array<int, 3>>* neighbours = nullptr);
-
 // The pocket chain q[0] = β-, ..., q[m] = β+ of a counter-clockwise outer boundary, whose bridge
 // β = (q[0], q[m]) is a convex hull edge. Returns, for every q[i], the length of the shortest path
 // inside the pocket polygon from q[i] to the bridge segment [units].

@@ -1,0 +1,594 @@
+#include "triangulate.h"
+
+#include "hullcook/core/predicates.h"
+#include "predicates_inline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hullcook::detail {
+
+namespace {
+
+// Reflex vertices bucketed in a uniform grid of about one cell per point, for triangle queries.
+// Items can be removed (a cell keeps its live items at its front), so that queries never visit
+// stale ones. The storage is reused from one polygon to the next.
+class ReflexGrid {
+ public:
+  void reset(const std::vector<Vec2>& points, const std::vector<int>& items) {
+    points_ = &points;
+    slot_.assign(points.size(), -1);
+    items_.resize(items.size());
+    if (items.empty()) return;
+    min_x_ = max_x_ = points[static_cast<std::size_t>(items[0])].x;
+    min_y_ = max_y_ = points[static_cast<std::size_t>(items[0])].y;
+    for (int i : items) {
+      const Vec2 p = points[static_cast<std::size_t>(i)];
+      min_x_ = std::min(min_x_, p.x), max_x_ = std::max(max_x_, p.x);
+      min_y_ = std::min(min_y_, p.y), max_y_ = std::max(max_y_, p.y);
+    }
+    side_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(items.size()))), 1, 1024);
+    scale_x_ = max_x_ > min_x_ ? side_ / (max_x_ - min_x_) : 0.0;
+    scale_y_ = max_y_ > min_y_ ? side_ / (max_y_ - min_y_) : 0.0;
+    const std::size_t cells = static_cast<std::size_t>(side_ * side_);
+    begin_.assign(cells + 1, 0);
+    for (int i : items) ++begin_[cell_of(i) + 1];
+    for (std::size_t c = 1; c <= cells; ++c) begin_[c] += begin_[c - 1];
+    end_.assign(begin_.begin(), begin_.end() - 1);
+    for (int i : items) {
+      const int slot = end_[cell_of(i)]++;
+      items_[static_cast<std::size_t>(slot)] = i;
+      slot_[static_cast<std::size_t>(i)] = slot;
+    }
+  }
+
+  void remove(int item) {
+    const int slot = slot_[static_cast<std::size_t>(item)];
+    if (slot < 0) return;
+    const int last = --end_[cell_of(item)];
+    const int moved = items_[static_cast<std::size_t>(last)];
+    items_[static_cast<std::size_t>(slot)] = moved;
+    slot_[static_cast<std::size_t>(moved)] = slot;
+    slot_[static_cast<std::size_t>(item)] = -1;
+  }
+
+  // True when hit(item) holds for some live item in a cell the triangle abc overlaps (box is its
+  // bounding box). Each row is scanned over the triangle's extent in it, widened by half a row and
+  // one cell so that rounding cannot leave a point's cell out: ear triangles are often long
+  // slivers whose box covers many cells.
+  template <typename Hit>
+  bool any_in_triangle(const Vec2 (&abc)[3], double min_x, double max_x, double min_y, double max_y,
+                       Hit&& hit) const {
+    if (items_.empty() || max_x < min_x_ || min_x > max_x_ || max_y < min_y_ || min_y > max_y_) {
+      return false;
+    }
+    const int box_x0 = cell_x(min_x), box_x1 = cell_x(max_x);
+    const int y0 = cell_y(min_y), y1 = cell_y(max_y);
+    for (int y = y0; y <= y1; ++y) {
+      int x0 = box_x0, x1 = box_x1;
+      if (y0 < y1 && x1 - x0 > 2) {
+        const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
+        double low_x = std::numeric_limits<double>::infinity(), high_x = -low_x;
+        for (int e = 0; e < 3; ++e) {
+          const Vec2 p = abc[e], q = abc[e == 2 ? 0 : e + 1];
+          if (std::max(p.y, q.y) < low || std::min(p.y, q.y) > high) continue;
+          double u = p.x, w = q.x;
+          if (p.y != q.y) {
+            auto x_at = [&](double line) {
+              const double t = std::clamp((line - p.y) / (q.y - p.y), 0.0, 1.0);
+              return p.x + t * (q.x - p.x);
+            };
+            u = x_at(low), w = x_at(high);
+          }
+          low_x = std::min({low_x, u, w}), high_x = std::max({high_x, u, w});
+        }
+        if (low_x > high_x) continue;
+        x0 = std::max(x0, cell_x(low_x) - 1), x1 = std::min(x1, cell_x(high_x) + 1);
+      }
+      const std::size_t row = static_cast<std::size_t>(y * side_);
+      for (std::size_t c = row + static_cast<std::size_t>(x0);
+           c <= row + static_cast<std::size_t>(x1); ++c) {
+        for (int k = begin_[c]; k < end_[c]; ++k) {
+          if (hit(items_[static_cast<std::size_t>(k)])) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::size_t cell_of(int item) const {
+    const Vec2 p = (*points_)[static_cast<std::size_t>(item)];
+    return static_cast<std::size_t>(cell_y(p.y) * side_ + cell_x(p.x));
+  }
+  int cell_x(double x) const {
+    return static_cast<int>(std::clamp((x - min_x_) * scale_x_, 0.0, side_ - 1.0));
+  }
+  int cell_y(double y) const {
+    return static_cast<int>(std::clamp((y - min_y_) * scale_y_, 0.0, side_ - 1.0));
+  }
+  const std::vector<Vec2>* points_ = nullptr;
+  double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0;
+  double scale_x_ = 0.0, scale_y_ = 0.0;
+  int side_ = 1;
+  std::vector<int> begin_, end_;  // per cell: its live items are items_[begin_, end_)
+  std::vector<int> items_;
+  std::vector<int> slot_;  // per point: its place in items_, or -1
+};
+
+// Working storage of the triangulation, kept per thread: a decomposition triangulates hundreds
+// of pockets, most of them small, and allocating for each was a tenth of the time.
+struct TriangulationScratch {
+  std::vector<int> prev, next, owner, reflex_list;
+  std::vector<char> reflex;
+  ReflexGrid grid;
+};
+
+// Below this many reflex vertices an ear test scans them all: cheaper than building a grid.
+constexpr std::size_t kGridFromReflexCount = 24;
+
+}  // namespace
+
+void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
+                                 std::vector<std::array<int, 3>>& triangles,
+                                 std::vector<std::array<int, 3>>* neighbours) {
+  thread_local TriangulationScratch scratch;
+  const int n = static_cast<int>(polygon.size());
+  triangles.clear();
+  if (neighbours) neighbours->clear();
+  if (n < 3) return;
+  triangles.reserve(static_cast<std::size_t>(n - 2));
+  // The triangle on the inner side of the remaining boundary's edge i -> next[i] (-1: none yet).
+  // A clipped ear (a, i, c) meets its neighbours across the edges a -> i and i -> c; its edge
+  // c -> a (index 2) becomes the boundary edge a -> c.
+  std::vector<int>& owner = scratch.owner;
+  if (neighbours) {
+    owner.assign(static_cast<std::size_t>(n), -1);
+    neighbours->reserve(static_cast<std::size_t>(n - 2));
+  }
+  auto add_triangle = [&](int a, int b, int c, bool closes) {
+    const int t = static_cast<int>(triangles.size());
+    triangles.push_back({a, b, c});
+    if (!neighbours) return;
+    const int across[3] = {owner[static_cast<std::size_t>(a)], owner[static_cast<std::size_t>(b)],
+                           closes ? owner[static_cast<std::size_t>(c)] : -1};
+    neighbours->push_back({across[0], across[1], across[2]});
+    for (int e = 0; e < 3; ++e) {
+      if (across[e] >= 0) (*neighbours)[static_cast<std::size_t>(across[e])][2] = t;
+    }
+    if (!closes) owner[static_cast<std::size_t>(a)] = t;
+  };
+  std::vector<int>& prev = scratch.prev;
+  std::vector<int>& next = scratch.next;
+  prev.resize(static_cast<std::size_t>(n));
+  next.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    prev[static_cast<std::size_t>(i)] = i - 1;
+    next[static_cast<std::size_t>(i)] = i + 1;
+  }
+  prev[0] = n - 1;
+  next[static_cast<std::size_t>(n - 1)] = 0;
+  auto at = [&](int i) { return polygon[static_cast<std::size_t>(i)]; };
+  auto P = [&](int i) { return prev[static_cast<std::size_t>(i)]; };
+  auto N = [&](int i) { return next[static_cast<std::size_t>(i)]; };
+  std::vector<char>& reflex = scratch.reflex;
+  std::vector<int>& reflex_list = scratch.reflex_list;
+  reflex.assign(static_cast<std::size_t>(n), 0);
+  reflex_list.clear();
+  for (int i = 0; i < n; ++i) {
+    if (detail::fast_orientation(at(P(i)), at(i), at(N(i))) <= 0) {
+      reflex[static_cast<std::size_t>(i)] = 1;
+      reflex_list.push_back(i);
+    }
+  }
+  // Reflex vertices in a uniform grid: an ear test visits only the cells its triangle covers. The
+  // set only shrinks (clipping never makes a convex vertex reflex), so the grid is built once and
+  // a vertex leaves it when it turns convex or is clipped.
+  const bool use_grid = reflex_list.size() >= kGridFromReflexCount;
+  ReflexGrid& grid = scratch.grid;
+  if (use_grid) grid.reset(polygon, reflex_list);
+  auto drop_reflex = [&](int i) {
+    reflex[static_cast<std::size_t>(i)] = 0;
+    if (use_grid) grid.remove(i);
+  };
+  auto update_reflex = [&](int i) {
+    if (detail::fast_orientation(at(P(i)), at(i), at(N(i))) > 0) drop_reflex(i);
+  };
+  auto is_ear = [&](int i) {
+    const int a = P(i), c = N(i);
+    if (detail::fast_orientation(at(a), at(i), at(c)) <= 0) return false;
+    const Vec2 abc[3] = {at(a), at(i), at(c)};
+    const Vec2 pa = abc[0], pb = abc[1], pc = abc[2];
+    const double min_x = std::min({pa.x, pb.x, pc.x}), max_x = std::max({pa.x, pb.x, pc.x});
+    const double min_y = std::min({pa.y, pb.y, pc.y}), max_y = std::max({pa.y, pb.y, pc.y});
+    auto inside = [&](int r) {
+      if (r == a || r == i || r == c) return false;
+      const Vec2 p = at(r);
+      if (p.x < min_x || p.x > max_x || p.y < min_y || p.y > max_y) return false;
+      return detail::fast_orientation(pa, pb, p) >= 0 && detail::fast_orientation(pb, pc, p) >= 0 &&
+             detail::fast_orientation(pc, pa, p) >= 0;
+    };
+    if (use_grid) return !grid.any_in_triangle(abc, min_x, max_x, min_y, max_y, inside);
+    for (int r : reflex_list) {
+      if (reflex[static_cast<std::size_t>(r)] && inside(r)) return false;
+    }
+    return true;
+  };
+  int remaining = n;
+  int current = 0;
+  int since_last_ear = 0;
+  while (remaining > 3) {
+    const bool degenerate_fallback = since_last_ear > remaining;
+    if (is_ear(current) ||
+        (degenerate_fallback &&
+         detail::fast_orientation(at(P(current)), at(current), at(N(current))) >= 0) ||
+        since_last_ear > 2 * remaining) {
+      const int a = P(current), c = N(current);
+      add_triangle(a, current, c, false);
+      if (reflex[static_cast<std::size_t>(current)]) drop_reflex(current);
+      next[static_cast<std::size_t>(a)] = c;
+      prev[static_cast<std::size_t>(c)] = a;
+      --remaining;
+      if (reflex[static_cast<std::size_t>(a)]) update_reflex(a);
+      if (reflex[static_cast<std::size_t>(c)]) update_reflex(c);
+      current = a;
+      since_last_ear = 0;
+    } else {
+      current = N(current);
+      ++since_last_ear;
+    }
+  }
+  add_triangle(P(current), current, N(current), true);
+}
+
+namespace {
+
+// The sweep runs from top to bottom; a point is above another when it is higher, or as high and
+// to the left (a symbolic rotation, so that no two points are at the same height).
+bool is_above(Vec2 a, Vec2 b) { return a.y > b.y || (a.y == b.y && a.x < b.x); }
+
+struct MonotoneScratch {
+  std::vector<int> order;      // vertices from top to bottom
+  std::vector<int> status;     // left-boundary edges crossing the sweep line, west to east
+  std::vector<int> helper;     // per edge i (i -> i + 1): its helper vertex
+  std::vector<char> is_merge;  // per vertex
+  std::vector<int> fan_start;  // per vertex: its first entry in fan (CSR), fan_start[n] = end
+  std::vector<int> fan;        // per vertex: its neighbours ccw from next to prev
+  std::vector<std::pair<int, int>> diagonals;
+  std::vector<char> used;  // per fan entry: the half-edge has been walked
+  std::vector<int> piece, chain_order, stack;
+  std::vector<char> on_left_chain;        // per vertex of the current piece
+  std::vector<int> edge_head, edge_next;  // per vertex: inner edges (lower end first) for adjacency
+  std::vector<std::array<int, 3>> edge_info;  // (other end, triangle, edge index)
+};
+
+// Appends the triangles of the polygon piece (vertex indices in ccw order), monotone with respect
+// to is_above. Returns false if the piece is not monotone.
+bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vector<int>& piece,
+                                MonotoneScratch& scratch,
+                                std::vector<std::array<int, 3>>& triangles) {
+  const std::size_t k = piece.size();
+  auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
+  auto add = [&](int a, int b, int c) {
+    if (detail::fast_orientation(at(a), at(b), at(c)) < 0) std::swap(b, c);
+    triangles.push_back({a, b, c});
+  };
+  if (k == 3) {
+    add(piece[0], piece[1], piece[2]);
+    return true;
+  }
+  std::size_t top = 0, bottom = 0;
+  for (std::size_t i = 1; i < k; ++i) {
+    if (is_above(at(piece[i]), at(piece[top]))) top = i;
+    if (is_above(at(piece[bottom]), at(piece[i]))) bottom = i;
+  }
+  // Going ccw from the top runs down the left chain (the interior is to its east), then up the
+  // right chain. Merge the chains from top to bottom.
+  std::vector<int>& sorted = scratch.chain_order;
+  std::vector<char>& left = scratch.on_left_chain;
+  sorted.clear();
+  left.clear();
+  auto step = [&](std::size_t i, bool forward) {
+    return forward ? (i + 1 == k ? 0 : i + 1) : (i == 0 ? k - 1 : i - 1);
+  };
+  sorted.push_back(piece[top]);
+  left.push_back(1);
+  std::size_t down = step(top, true), up = step(top, false);  // next of each chain
+  while (down != bottom || up != bottom) {
+    if (down != bottom && (up == bottom || is_above(at(piece[down]), at(piece[up])))) {
+      sorted.push_back(piece[down]);
+      left.push_back(1);
+      down = step(down, true);
+    } else {
+      sorted.push_back(piece[up]);
+      left.push_back(0);
+      up = step(up, false);
+    }
+  }
+  sorted.push_back(piece[bottom]);
+  left.push_back(1);
+  for (std::size_t i = 1; i < k; ++i) {
+    if (!is_above(at(sorted[i - 1]), at(sorted[i]))) return false;  // not monotone
+  }
+  std::vector<int>& stack = scratch.stack;
+  stack.assign({0, 1});  // positions in sorted
+  for (std::size_t j = 2; j + 1 < k; ++j) {
+    const int u = sorted[j];
+    const int top_position = stack.back();
+    if (left[j] != left[static_cast<std::size_t>(top_position)]) {
+      for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+        add(u, sorted[static_cast<std::size_t>(stack[i])],
+            sorted[static_cast<std::size_t>(stack[i + 1])]);
+      }
+      stack.assign({static_cast<int>(j - 1), static_cast<int>(j)});
+    } else {
+      int last = stack.back();
+      stack.pop_back();
+      while (!stack.empty()) {
+        const Vec2 s = at(sorted[static_cast<std::size_t>(stack.back())]);
+        const Vec2 l = at(sorted[static_cast<std::size_t>(last)]);
+        // The diagonal u-s is inside when the chain bulges into the interior at l.
+        const int side = detail::fast_orientation(s, at(u), l);
+        if (left[j] ? side >= 0 : side <= 0) break;
+        add(u, sorted[static_cast<std::size_t>(last)],
+            sorted[static_cast<std::size_t>(stack.back())]);
+        last = stack.back();
+        stack.pop_back();
+      }
+      stack.push_back(last);
+      stack.push_back(static_cast<int>(j));
+    }
+  }
+  const int u = sorted[k - 1];
+  for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+    add(u, sorted[static_cast<std::size_t>(stack[i])],
+        sorted[static_cast<std::size_t>(stack[i + 1])]);
+  }
+  return true;
+}
+
+// The sweep of de Berg et al. (Computational Geometry, ch. 3) adds diagonals at split and merge
+// vertices; the faces are then monotone pieces. Fills triangles, or returns false (triangles
+// unspecified) on input the sweep does not handle: repeated points, or a ring that is not simple.
+bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
+                                   std::vector<std::array<int, 3>>& triangles,
+                                   MonotoneScratch& scratch) {
+  const int n = static_cast<int>(polygon.size());
+  auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
+  auto next = [&](int v) { return v + 1 == n ? 0 : v + 1; };
+  auto prev = [&](int v) { return v == 0 ? n - 1 : v - 1; };
+  std::vector<int>& order = scratch.order;
+  order.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return is_above(at(a), at(b)); });
+  for (int i = 1; i < n; ++i) {
+    if (at(order[static_cast<std::size_t>(i - 1)]) == at(order[static_cast<std::size_t>(i)]))
+      return false;
+  }
+  std::vector<int>& status = scratch.status;
+  std::vector<int>& helper = scratch.helper;
+  std::vector<char>& is_merge = scratch.is_merge;
+  std::vector<std::pair<int, int>>& diagonals = scratch.diagonals;
+  status.clear();
+  diagonals.clear();
+  helper.assign(static_cast<std::size_t>(n), -1);
+  is_merge.assign(static_cast<std::size_t>(n), 0);
+  // Status edges are left-boundary edges i -> i + 1, which run downward with the interior east.
+  // v is east of edge e when it is left of the downward e.
+  auto east_of = [&](int v, int e) {
+    return detail::fast_orientation(at(e), at(next(e)), at(v)) > 0;
+  };
+  auto position_west_of = [&](int v) {  // the number of status edges west of v
+    return static_cast<std::size_t>(
+        std::partition_point(status.begin(), status.end(), [&](int e) { return east_of(v, e); }) -
+        status.begin());
+  };
+  auto insert_edge = [&](int e) {
+    status.insert(status.begin() + static_cast<std::ptrdiff_t>(position_west_of(e)), e);
+    helper[static_cast<std::size_t>(e)] = e;
+  };
+  auto remove_edge = [&](int e) {
+    const auto found = std::find(status.begin(), status.end(), e);
+    if (found == status.end()) return false;
+    status.erase(found);
+    return true;
+  };
+  auto edge_west_of = [&](int v) {  // the status edge directly west of v, or -1
+    const std::size_t count = position_west_of(v);
+    return count == 0 ? -1 : status[count - 1];
+  };
+  auto connect_merge_helper = [&](int v, int e) {
+    const int h = helper[static_cast<std::size_t>(e)];
+    if (h >= 0 && is_merge[static_cast<std::size_t>(h)]) diagonals.emplace_back(v, h);
+  };
+  for (int v : order) {
+    const int before = prev(v), after = next(v);
+    const bool before_below = is_above(at(v), at(before));
+    const bool after_below = is_above(at(v), at(after));
+    const bool convex = detail::fast_orientation(at(before), at(v), at(after)) > 0;
+    if (before_below && after_below) {
+      if (convex) {  // start
+        insert_edge(v);
+      } else {  // split
+        const int e = edge_west_of(v);
+        if (e < 0) return false;
+        diagonals.emplace_back(v, helper[static_cast<std::size_t>(e)]);
+        helper[static_cast<std::size_t>(e)] = v;
+        insert_edge(v);
+      }
+    } else if (!before_below && !after_below) {
+      connect_merge_helper(v, before);
+      if (!remove_edge(before)) return false;
+      if (!convex) {  // merge
+        is_merge[static_cast<std::size_t>(v)] = 1;
+        const int e = edge_west_of(v);
+        if (e < 0) return false;
+        connect_merge_helper(v, e);
+        helper[static_cast<std::size_t>(e)] = v;
+      }
+    } else if (after_below) {  // on the left boundary: the interior is east
+      connect_merge_helper(v, before);
+      if (!remove_edge(before)) return false;
+      insert_edge(v);
+    } else {
+      const int e = edge_west_of(v);
+      if (e < 0) return false;
+      connect_merge_helper(v, e);
+      helper[static_cast<std::size_t>(e)] = v;
+    }
+  }
+  triangles.clear();
+  if (diagonals.empty()) {
+    std::vector<int>& piece = scratch.piece;
+    piece.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
+    return triangulate_monotone_piece(polygon, piece, scratch, triangles);
+  }
+  // Around each vertex, its neighbours ccw from next to prev (the diagonals lie in between), as
+  // a compressed table. The pieces are the faces: arriving at v from u, a face goes on to the
+  // neighbour just clockwise of u.
+  std::vector<int>& fan_start = scratch.fan_start;
+  std::vector<int>& fan = scratch.fan;
+  fan_start.assign(static_cast<std::size_t>(n) + 1, 2);
+  fan_start[0] = 0;
+  for (const auto& [a, b] : diagonals) {
+    ++fan_start[static_cast<std::size_t>(a) + 1];
+    ++fan_start[static_cast<std::size_t>(b) + 1];
+  }
+  for (int i = 0; i < n; ++i)
+    fan_start[static_cast<std::size_t>(i) + 1] += fan_start[static_cast<std::size_t>(i)];
+  fan.assign(static_cast<std::size_t>(fan_start[static_cast<std::size_t>(n)]), -1);
+  std::vector<int>& fill = scratch.stack;
+  fill.assign(fan_start.begin(), fan_start.end() - 1);
+  for (int v = 0; v < n; ++v)
+    fan[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = next(v);
+  for (const auto& [a, b] : diagonals) {
+    fan[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+    fan[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  }
+  for (int v = 0; v < n; ++v) {
+    fan[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = prev(v);
+    const auto first = fan.begin() + fan_start[static_cast<std::size_t>(v)];
+    const auto last = fan.begin() + fan_start[static_cast<std::size_t>(v) + 1];
+    if (last - first == 2) continue;
+    // Angles ccw from the direction to next(v), all within the interior angle.
+    const Vec2 origin = at(v), reference = at(next(v));
+    auto half = [&](int w) {
+      const int side = detail::fast_orientation(origin, reference, at(w));
+      if (side != 0) return side > 0 ? 0 : 1;
+      const Vec2 d = at(w) - origin, r = reference - origin;
+      return d.x * r.x + d.y * r.y > 0 ? 0 : 1;
+    };
+    std::sort(first + 1, last - 1, [&](int a, int b) {
+      const int ha = half(a), hb = half(b);
+      if (ha != hb) return ha < hb;
+      return detail::fast_orientation(origin, at(a), at(b)) > 0;
+    });
+  }
+  auto fan_index = [&](int v, int w) {  // w's entry in v's fan
+    for (int i = fan_start[static_cast<std::size_t>(v)];
+         i < fan_start[static_cast<std::size_t>(v) + 1]; ++i) {
+      if (fan[static_cast<std::size_t>(i)] == w) return i;
+    }
+    return -1;
+  };
+  std::vector<char>& used = scratch.used;
+  used.assign(fan.size(), 0);
+  std::vector<int>& piece = scratch.piece;
+  std::size_t walked = 0;
+  for (int v0 = 0; v0 < n; ++v0) {
+    // Every half-edge but v -> prev(v) (the outside) bounds one piece on its left.
+    for (int i = fan_start[static_cast<std::size_t>(v0)];
+         i + 1 < fan_start[static_cast<std::size_t>(v0) + 1]; ++i) {
+      if (used[static_cast<std::size_t>(i)]) continue;
+      piece.clear();
+      int u = v0, entry = i;
+      while (!used[static_cast<std::size_t>(entry)]) {
+        used[static_cast<std::size_t>(entry)] = 1;
+        piece.push_back(u);
+        const int w = fan[static_cast<std::size_t>(entry)];
+        const int back = fan_index(w, u);
+        if (back < 0 || back == fan_start[static_cast<std::size_t>(w)]) return false;
+        entry = back - 1;  // clockwise of u around w
+        u = w;
+        if (piece.size() > static_cast<std::size_t>(n)) return false;
+      }
+      if (u != v0 || piece.size() < 3) return false;
+      walked += piece.size();
+      if (!triangulate_monotone_piece(polygon, piece, scratch, triangles)) return false;
+    }
+  }
+  return walked == static_cast<std::size_t>(n) + 2 * diagonals.size();
+}
+
+// Fills neighbours for triangles of an n-gon: across polygon edges -1, across inner edges the
+// other triangle sharing them.
+bool link_neighbours(int n, const std::vector<std::array<int, 3>>& triangles,
+                     std::vector<std::array<int, 3>>& neighbours, MonotoneScratch& scratch) {
+  neighbours.assign(triangles.size(), {-1, -1, -1});
+  std::vector<int>& head = scratch.edge_head;
+  std::vector<int>& link = scratch.edge_next;
+  std::vector<std::array<int, 3>>& info = scratch.edge_info;
+  head.assign(static_cast<std::size_t>(n), -1);
+  link.clear();
+  info.clear();
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int e = 0; e < 3; ++e) {
+      int a = triangles[t][static_cast<std::size_t>(e)];
+      int b = triangles[t][static_cast<std::size_t>(e == 2 ? 0 : e + 1)];
+      if (a > b) std::swap(a, b);
+      if (b == a + 1 || (a == 0 && b == n - 1)) continue;  // a polygon edge
+      int found = -1;
+      for (int k = head[static_cast<std::size_t>(a)]; k >= 0;
+           k = link[static_cast<std::size_t>(k)]) {
+        if (info[static_cast<std::size_t>(k)][0] == b) {
+          found = k;
+          break;
+        }
+      }
+      if (found < 0) {
+        link.push_back(head[static_cast<std::size_t>(a)]);
+        head[static_cast<std::size_t>(a)] = static_cast<int>(info.size());
+        info.push_back({b, static_cast<int>(t), e});
+        continue;
+      }
+      auto& other = info[static_cast<std::size_t>(found)];
+      if (other[1] < 0) return false;  // a third triangle on one edge
+      neighbours[t][static_cast<std::size_t>(e)] = other[1];
+      neighbours[static_cast<std::size_t>(other[1])][static_cast<std::size_t>(other[2])] =
+          static_cast<int>(t);
+      other[1] = -1;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
+                          std::vector<std::array<int, 3>>& triangles,
+                          std::vector<std::array<int, 3>>* neighbours) {
+  thread_local MonotoneScratch scratch;
+  const int n = static_cast<int>(polygon.size());
+  triangles.clear();
+  if (neighbours) neighbours->clear();
+  if (n < 3) return true;
+  if (n == 3) {
+    triangles.push_back({0, 1, 2});
+    if (neighbours) neighbours->push_back({-1, -1, -1});
+    return true;
+  }
+  return sweep_into_monotone_triangles(polygon, triangles, scratch) &&
+         triangles.size() == static_cast<std::size_t>(n - 2) &&
+         (!neighbours || link_neighbours(n, triangles, *neighbours, scratch));
+}
+
+void triangulate(const std::vector<Vec2>& polygon, std::vector<std::array<int, 3>>& triangles,
+                 std::vector<std::array<int, 3>>* neighbours) {
+  if (!triangulate_by_sweep(polygon, triangles, neighbours)) {
+    triangulate_by_ear_clipping(polygon, triangles, neighbours);
+  }
+}
+
+}  // namespace hullcook::detail
