@@ -60,43 +60,63 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
     return detail::fast_orient2d(point(from), point(via), w);
   };
 
-  struct Task {
-    int triangle;
+  // Depth-first over the triangles from the bridge. All funnels live in one buffer: a child's
+  // funnel is a prefix or a suffix of its parent's plus the new vertex, written just past that
+  // range; the write is undone once the child's subtree is done, so a sibling sees its parent's
+  // funnel intact. A child reaches at most one place further out than its parent, so the buffer
+  // needs the depth (at most m) on either side.
+  struct Step {
+    int triangle;  // -1: undo, restoring funnel[write] = value
     int a, b;
-    std::vector<int> funnel;
-    int apex;
+    int low, high, apex;  // the funnel is funnel[low..high], its apex at funnel[apex]
+    int write, value;     // funnel[write] = value on entry (write -1: nothing)
   };
-  std::vector<Task> stack;
-  stack.push_back({root, 0, m, {0, kInfinity, m}, 1});
+  thread_local std::vector<int> funnel;
+  thread_local std::vector<Step> stack;
+  const int centre = m + 2;
+  funnel.assign(static_cast<std::size_t>(2 * centre + 3), 0);
+  funnel[static_cast<std::size_t>(centre)] = 0;
+  funnel[static_cast<std::size_t>(centre + 1)] = kInfinity;
+  funnel[static_cast<std::size_t>(centre + 2)] = m;
+  stack.clear();
+  stack.push_back({root, 0, m, centre, centre + 2, centre + 1, -1, 0});
+  auto f = [&](int position) { return funnel[static_cast<std::size_t>(position)]; };
   while (!stack.empty()) {
-    Task task = std::move(stack.back());
+    const Step step = stack.back();
     stack.pop_back();
-    const auto& tri = triangles[static_cast<std::size_t>(task.triangle)];
+    if (step.write >= 0) {
+      int& slot = funnel[static_cast<std::size_t>(step.write)];
+      if (step.triangle < 0) {
+        slot = step.value;
+        continue;
+      }
+      stack.push_back({-1, 0, 0, 0, 0, 0, step.write, slot});
+      slot = step.value;
+    }
+    const auto& tri = triangles[static_cast<std::size_t>(step.triangle)];
     int w = -1;
     for (int v : tri) {
-      if (v != task.a && v != task.b) w = v;
+      if (v != step.a && v != step.b) w = v;
     }
     const Vec2 pw = point(w);
-    std::vector<int>& f = task.funnel;
-    const int apex = task.apex;
-    const int size = static_cast<int>(f.size());
+    const int apex = step.apex;
     int wrap = -1;
-    for (int j = 0; j < apex; ++j) {
-      if (turn(f[static_cast<std::size_t>(j + 1)], f[static_cast<std::size_t>(j)], pw) > 0) {
+    for (int j = step.low; j < apex; ++j) {
+      if (turn(f(j + 1), f(j), pw) > 0) {
         wrap = j;
         break;
       }
     }
     if (wrap < 0) {
-      for (int k = size - 1; k > apex; --k) {
-        if (turn(f[static_cast<std::size_t>(k - 1)], f[static_cast<std::size_t>(k)], pw) < 0) {
+      for (int k = step.high; k > apex; --k) {
+        if (turn(f(k - 1), f(k), pw) < 0) {
           wrap = k;
           break;
         }
       }
     }
     if (wrap < 0) wrap = apex;
-    const int predecessor = f[static_cast<std::size_t>(wrap)];
+    const int predecessor = f(wrap);
     if (predecessor == kInfinity) {
       const Vec2 d = pw - s;
       distance[static_cast<std::size_t>(w)] = d.x * normal.x + d.y * normal.y;
@@ -105,21 +125,16 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
       distance[static_cast<std::size_t>(w)] =
           distance[static_cast<std::size_t>(predecessor)] + std::hypot(d.x, d.y);
     }
-    const int right_triangle = neighbour(task.triangle, w, task.b);
-    const int left_triangle = neighbour(task.triangle, task.a, w);
+    const int right_triangle = neighbour(step.triangle, w, step.b);
+    const int left_triangle = neighbour(step.triangle, step.a, w);
+    // Right: w, then the funnel from wrap on. Left: the funnel up to wrap, then w.
     if (right_triangle >= 0) {
-      std::vector<int> child;
-      child.reserve(static_cast<std::size_t>(size - wrap + 1));
-      child.push_back(w);
-      child.insert(child.end(), f.begin() + wrap, f.end());
       stack.push_back(
-          {right_triangle, w, task.b, std::move(child), std::max(wrap, apex) - wrap + 1});
+          {right_triangle, w, step.b, wrap - 1, step.high, std::max(wrap, apex), wrap - 1, w});
     }
     if (left_triangle >= 0) {
-      // The left funnel is a prefix of this one: reuse its storage.
-      f.resize(static_cast<std::size_t>(wrap + 1));
-      f.push_back(w);
-      stack.push_back({left_triangle, task.a, w, std::move(f), std::min(wrap, apex)});
+      stack.push_back(
+          {left_triangle, step.a, w, step.low, wrap + 1, std::min(wrap, apex), wrap + 1, w});
     }
   }
   return distance;
