@@ -265,49 +265,198 @@ std::pair<std::size_t, std::size_t> principal_axis_extremes(const Ring& hole) {
   return {low, high};
 }
 
+// A candidate for Eq. 5's closest vertex x. Ties in distance go to the first vertex in the order
+// outer ring, holes by index, vertex index: the order in which a plain scan would meet them.
+struct NearVertex {
+  double distance = std::numeric_limits<double>::infinity();
+  int ring = 0;  // 0 outer, h + 1 hole h
+  std::size_t index = 0;
+  bool before(const NearVertex& other) const {
+    if (distance != other.distance) return distance < other.distance;
+    return ring != other.ring ? ring < other.ring : index < other.index;
+  }
+};
+
+// Squared distances decide which vertices need the exact (hypot) distance: a vertex whose squared
+// distance exceeds the smallest seen by this relative margin cannot be the closest (rounding is a
+// few ulps), provided no square overflows or loses precision to underflow.
+constexpr double kSquaredMargin = 1.0 + 1e-9;
+bool squares_are_accurate(double squared) { return squared > 1e-200 && squared < 1e200; }
+
+// The closest vertex to point on ring ring_id, by a scan.
+void scan_ring(const Ring& ring, int ring_id, Vec2 point, NearVertex& best) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 offset = ring[i] - point;
+    const double bound = best.distance;
+    if (bound > 1e-100 && bound < 1e100 &&
+        offset.x * offset.x + offset.y * offset.y > bound * bound * kSquaredMargin) {
+      continue;
+    }
+    const double d = distance(ring[i], point);
+    if (d < best.distance) best = {d, ring_id, i};
+  }
+}
+
+// The closest vertex to point on every ring but skip_ring, by a scan.
+NearVertex nearest_by_scan(const Region& region, Vec2 point, int skip_ring) {
+  NearVertex best;
+  scan_ring(region.outer, 0, point, best);
+  for (std::size_t o = 0; o < region.holes.size(); ++o) {
+    const int ring_id = static_cast<int>(o + 1);
+    if (ring_id != skip_ring) scan_ring(region.holes[o], ring_id, point, best);
+  }
+  return best;
+}
+
+// Every vertex of a region in a uniform grid of square cells, for Eq. 5's nearest-vertex searches
+// (each hole's two ends against all the other rings).
+class VertexGrid {
+ public:
+  explicit VertexGrid(const Region& region) {
+    std::size_t count = region.outer.size();
+    for (const Ring& hole : region.holes) count += hole.size();
+    // The holes lie inside the outer ring, so its box holds every vertex.
+    double max_x = region.outer[0].x, max_y = region.outer[0].y;
+    min_x_ = max_x, min_y_ = max_y;
+    for (Vec2 p : region.outer) {
+      min_x_ = std::min(min_x_, p.x), max_x = std::max(max_x, p.x);
+      min_y_ = std::min(min_y_, p.y), max_y = std::max(max_y, p.y);
+    }
+    // About one vertex per cell if they were spread evenly over the box.
+    const double width = max_x - min_x_, height = max_y - min_y_;
+    cell_size_ = std::sqrt(width * height / static_cast<double>(count));
+    if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) cell_size_ = std::max(width, height);
+    if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) return;  // no grid: scans only
+    columns_ = static_cast<int>(std::clamp(width / cell_size_, 0.0, 1023.0)) + 1;
+    rows_ = static_cast<int>(std::clamp(height / cell_size_, 0.0, 1023.0)) + 1;
+    scale_ = 1.0 / cell_size_;
+    cell_start_.assign(static_cast<std::size_t>(columns_ * rows_ + 1), 0);
+    std::vector<int> cell_of_vertex;
+    cell_of_vertex.reserve(count);
+    auto each_ring = [&](auto&& visit) {
+      visit(region.outer, 0);
+      for (std::size_t h = 0; h < region.holes.size(); ++h) {
+        visit(region.holes[h], static_cast<int>(h + 1));
+      }
+    };
+    each_ring([&](const Ring& ring, int) {
+      for (Vec2 p : ring) {
+        const int cell = row_of(p.y) * columns_ + column_of(p.x);
+        cell_of_vertex.push_back(cell);
+        ++cell_start_[static_cast<std::size_t>(cell) + 1];
+      }
+    });
+    for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+    entries_.resize(count);
+    std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+    std::size_t next = 0;
+    each_ring([&](const Ring& ring, int ring_id) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const int slot = fill[static_cast<std::size_t>(cell_of_vertex[next++])]++;
+        entries_[static_cast<std::size_t>(slot)] = {ring[i], ring_id, i};
+      }
+    });
+  }
+
+  // The closest vertex to point on every ring but skip_ring, as nearest_by_scan finds it; nullopt
+  // where squared distances could mislead (then scan).
+  std::optional<NearVertex> nearest(Vec2 point, int skip_ring) const {
+    if (cell_start_.empty()) return std::nullopt;
+    const int column = column_of(point.x), row = row_of(point.y);
+    NearVertex best;
+    double best_squared = std::numeric_limits<double>::infinity();
+    auto visit_cell = [&](int x, int y) {
+      const std::size_t cell = static_cast<std::size_t>(y * columns_ + x);
+      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+        const Entry& entry = entries_[static_cast<std::size_t>(k)];
+        if (entry.ring == skip_ring) continue;
+        const Vec2 offset = entry.point - point;
+        const double squared = offset.x * offset.x + offset.y * offset.y;
+        if (squared > best_squared * kSquaredMargin) continue;
+        best_squared = std::min(best_squared, squared);
+        const NearVertex candidate{distance(entry.point, point), entry.ring, entry.index};
+        if (candidate.before(best)) best = candidate;
+      }
+    };
+    // Square layers of cells around point's cell. After layer L every vertex left lies more than
+    // L cells away in x or y; one cell less covers the rounding of the cell assignment.
+    for (int layer = 0;; ++layer) {
+      const int x0 = column - layer, x1 = column + layer, y0 = row - layer, y1 = row + layer;
+      if (x0 < 0 && y0 < 0 && x1 >= columns_ && y1 >= rows_) break;
+      const int clipped_x0 = std::max(x0, 0), clipped_x1 = std::min(x1, columns_ - 1);
+      if (y0 >= 0) {
+        for (int x = clipped_x0; x <= clipped_x1; ++x) visit_cell(x, y0);
+      }
+      if (y1 < rows_ && y1 != y0) {
+        for (int x = clipped_x0; x <= clipped_x1; ++x) visit_cell(x, y1);
+      }
+      for (int y = std::max(y0 + 1, 0); y <= std::min(y1 - 1, rows_ - 1); ++y) {
+        if (x0 >= 0) visit_cell(x0, y);
+        if (x1 < columns_ && x1 != x0) visit_cell(x1, y);
+      }
+      const double reach = (layer - 1) * cell_size_;
+      if (reach > 0.0 && reach * reach > best_squared * (1.0 + 1e-6)) break;
+    }
+    if (!squares_are_accurate(best_squared)) return std::nullopt;
+    return best;
+  }
+
+ private:
+  struct Entry {
+    Vec2 point;
+    int ring;
+    std::size_t index;
+  };
+  int column_of(double x) const {
+    return static_cast<int>(std::clamp((x - min_x_) * scale_, 0.0, columns_ - 1.0));
+  }
+  int row_of(double y) const {
+    return static_cast<int>(std::clamp((y - min_y_) * scale_, 0.0, rows_ - 1.0));
+  }
+  double min_x_ = 0.0, min_y_ = 0.0, cell_size_ = 0.0, scale_ = 0.0;
+  int columns_ = 1, rows_ = 1;
+  std::vector<int> cell_start_;  // per cell, its first entry in entries_ (empty: no grid)
+  std::vector<Entry> entries_;
+};
+
+// Eq. 5's closest vertex x for the two ends (p, q) of a hole: the end nearer to a vertex is joined
+// first; on a tie, the vertex first in ring order, then p.
+HoleConcavity closest_to_ends(std::size_t p, std::size_t q, const NearVertex& from_p,
+                              const NearVertex& from_q) {
+  const bool take_q = from_q.before(from_p);
+  const NearVertex& chosen = take_q ? from_q : from_p;
+  HoleConcavity info;
+  info.closest_ring = chosen.ring, info.closest = chosen.index;
+  info.joined = take_q ? q : p;
+  info.far_end = take_q ? p : q;
+  return info;
+}
+
 std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcavity& outer) {
   const std::size_t k = region.holes.size();
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
-  std::vector<HoleConcavity> outer_fallback(k);
+  std::vector<std::pair<std::size_t, std::size_t>> extremes(k);
+  const VertexGrid grid(region);
   for (std::size_t h = 0; h < k; ++h) {
     const Ring& hole = region.holes[h];
-    const auto [p, q] = principal_axis_extremes(hole);
-    double best = std::numeric_limits<double>::infinity();
-    double best_outer = best;
-    HoleConcavity info, info_outer;
-    auto consider = [&](const Ring& ring, int ring_id) {
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        for (std::size_t end : {p, q}) {
-          // Skip the costly hypot when the squared distance is surely beyond both bests
-          // (best <= best_outer); the margin dwarfs rounding, so the choices are unchanged.
-          const double bound = ring_id == 0 ? best_outer : best;
-          const Vec2 offset = ring[i] - hole[end];
-          if (bound > 1e-100 && bound < 1e100 &&
-              offset.x * offset.x + offset.y * offset.y > bound * bound * (1.0 + 1e-9)) {
-            continue;
-          }
-          const double d = distance(ring[i], hole[end]);
-          if (d < best) {
-            best = d;
-            info.closest_ring = ring_id, info.closest = i, info.joined = end;
-            info.far_end = end == p ? q : p;
-          }
-          if (ring_id == 0 && d < best_outer) {
-            best_outer = d;
-            info_outer.closest_ring = 0, info_outer.closest = i, info_outer.joined = end;
-            info_outer.far_end = end == p ? q : p;
-          }
-        }
-      }
+    const auto [p, q] = extremes[h] = principal_axis_extremes(hole);
+    const int hole_ring = static_cast<int>(h + 1);
+    auto nearest = [&](Vec2 point) {
+      const std::optional<NearVertex> found = grid.nearest(point, hole_ring);
+      return found ? *found : nearest_by_scan(region, point, hole_ring);
     };
-    consider(region.outer, 0);
-    for (std::size_t o = 0; o < k; ++o) {
-      if (o != h) consider(region.holes[o], static_cast<int>(o + 1));
-    }
-    holes[h] = info;
-    outer_fallback[h] = info_outer;
+    holes[h] = closest_to_ends(p, q, nearest(hole[p]), nearest(hole[q]));
   }
+  // The closest vertex of ∂P0 alone, where the chain of closest vertices cycles.
+  auto outer_fallback = [&](std::size_t h) {
+    const Ring& hole = region.holes[h];
+    const auto [p, q] = extremes[h];
+    NearVertex from_p, from_q;
+    scan_ring(region.outer, 0, hole[p], from_p);
+    scan_ring(region.outer, 0, hole[q], from_q);
+    return closest_to_ends(p, q, from_p, from_q);
+  };
   // Depth through the chain of closest vertices (Fig. 12(b)); a cycle falls back to ∂P0.
   std::vector<int> state(k, 0);  // 0 new, 1 in progress, 2 done
   auto vertex_of = [&](const HoleConcavity& info) {
@@ -319,7 +468,7 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     state[h] = 1;
     HoleConcavity& info = holes[h];
     if (info.closest_ring != 0 && state[std::size_t(info.closest_ring - 1)] == 1) {
-      info = outer_fallback[h];
+      info = outer_fallback(h);
     }
     const Ring& hole = region.holes[h];
     const std::vector<double>& depth = outer.depth.empty() ? outer.vertex : outer.depth;
@@ -392,8 +541,12 @@ class RegionView {
       // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
       // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
       // cell so that rounding cannot leave X's cell out.
+      // The cells are visited from a toward b: a hole's candidates are mostly blocked by the
+      // holes around it, near a, and the set of cells (so the answer) does not depend on the order.
       const int y0 = cell_y(min_y), y1 = cell_y(max_y);
-      for (int y = y0; y <= y1; ++y) {
+      const bool rows_down = a.y > b.y, columns_left = a.x > b.x;
+      for (int row = 0; row <= y1 - y0; ++row) {
+        const int y = rows_down ? y1 - row : y0 + row;
         int x0 = cell_x(min_x), x1 = cell_x(max_x);
         if (y0 < y1 && a.y != b.y) {
           const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
@@ -405,7 +558,8 @@ class RegionView {
           x0 = std::max(x0, cell_x(std::min(u, w)) - 1);
           x1 = std::min(x1, cell_x(std::max(u, w)) + 1);
         }
-        for (int x = x0; x <= x1; ++x) {
+        for (int column = 0; column <= x1 - x0; ++column) {
+          const int x = columns_left ? x1 - column : x0 + column;
           const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
           for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
             const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
