@@ -248,13 +248,18 @@ namespace {
 // to the left (a symbolic rotation, so that no two points are at the same height).
 bool is_above(Vec2 a, Vec2 b) { return a.y > b.y || (a.y == b.y && a.x < b.x); }
 
+struct SweepEvent {
+  Vec2 point;
+  int vertex;
+};
+
 struct MonotoneScratch {
-  std::vector<int> order;      // vertices from top to bottom
-  std::vector<int> status;     // left-boundary edges crossing the sweep line, west to east
-  std::vector<int> helper;     // per edge i (i -> i + 1): its helper vertex
-  std::vector<char> is_merge;  // per vertex
-  std::vector<int> fan_start;  // per vertex: its first entry in fan (CSR), fan_start[n] = end
-  std::vector<int> fan;        // per vertex: its neighbours ccw from next to prev
+  std::vector<SweepEvent> events;  // vertices from top to bottom
+  std::vector<int> status;         // left-boundary edges crossing the sweep line, west to east
+  std::vector<int> helper;         // per edge i (i -> i + 1): its helper vertex
+  std::vector<char> is_merge;      // per vertex
+  std::vector<int> fan_start;      // per vertex: its first entry in fan (CSR), fan_start[n] = end
+  std::vector<int> fan;            // per vertex: its neighbours ccw from next to prev
   std::vector<std::pair<int, int>> diagonals;
   std::vector<char> used;  // per fan entry: the half-edge has been walked
   std::vector<int> piece, chain_order, stack;
@@ -358,13 +363,14 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
   auto next = [&](int v) { return v + 1 == n ? 0 : v + 1; };
   auto prev = [&](int v) { return v == 0 ? n - 1 : v - 1; };
-  std::vector<int>& order = scratch.order;
-  order.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) order[static_cast<std::size_t>(i)] = i;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return is_above(at(a), at(b)); });
-  for (int i = 1; i < n; ++i) {
-    if (at(order[static_cast<std::size_t>(i - 1)]) == at(order[static_cast<std::size_t>(i)]))
-      return false;
+  // Sorting the points themselves, not indices into them, keeps the comparisons in cache.
+  std::vector<SweepEvent>& events = scratch.events;
+  events.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) events[static_cast<std::size_t>(i)] = {at(i), i};
+  std::sort(events.begin(), events.end(),
+            [](const SweepEvent& a, const SweepEvent& b) { return is_above(a.point, b.point); });
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    if (events[i - 1].point == events[i].point) return false;
   }
   std::vector<int>& status = scratch.status;
   std::vector<int>& helper = scratch.helper;
@@ -402,7 +408,8 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
     const int h = helper[static_cast<std::size_t>(e)];
     if (h >= 0 && is_merge[static_cast<std::size_t>(h)]) diagonals.emplace_back(v, h);
   };
-  for (int v : order) {
+  for (const SweepEvent& event : events) {
+    const int v = event.vertex;
     const int before = prev(v), after = next(v);
     const bool before_below = is_above(at(v), at(before));
     const bool after_below = is_above(at(v), at(after));
