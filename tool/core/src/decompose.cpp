@@ -7,6 +7,7 @@
 #include "predicates_inline.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -538,6 +539,17 @@ class RegionView {
     // The edge that blocked the previous candidate often blocks this one too.
     if (last_blocker_.ring >= 0 && blocks(last_blocker_.ring, last_blocker_.index)) return false;
     if (!edge_start_.empty()) {
+      // Sight lines from one vertex in one direction are mostly blocked by the same few edges.
+      if (sight_origin_.ring != u.ring || sight_origin_.index != u.index) {
+        for (std::vector<EdgeRef>& sector : blockers_by_sector_) sector.clear();
+        sight_origin_ = u;
+      }
+      for (const EdgeRef edge : blockers_by_sector_[sector_of(b - a)]) {
+        if (blocks(edge.ring, edge.index)) {
+          last_blocker_ = edge;
+          return false;
+        }
+      }
       // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
       // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
       // cell so that rounding cannot leave X's cell out.
@@ -565,6 +577,7 @@ class RegionView {
             const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
             if (blocks(edge.ring, edge.index)) {
               last_blocker_ = edge;
+              remember_blocker(a, edge);
               return false;
             }
           }
@@ -630,6 +643,31 @@ class RegionView {
     int ring;
     std::size_t index;
   };
+  // Sectors of directions around a vertex, cut by a pseudo-angle (monotone in the angle, without
+  // trigonometry). Their bounds need not be exact: a cached edge is always tested again.
+  static constexpr int kSectors = 64;
+  static std::size_t sector_of(Vec2 direction) {
+    const double sum = std::abs(direction.x) + std::abs(direction.y);
+    if (!(sum > 0.0)) return 0;
+    const double turn = direction.y / sum;  // in [-1, 1]; with the sign of x, the quadrant
+    const double pseudo_angle = direction.x >= 0.0 ? 1.0 + turn : 3.0 - turn;  // in [0, 4]
+    const int sector = static_cast<int>(pseudo_angle * (kSectors / 4.0));
+    return static_cast<std::size_t>(std::clamp(sector, 0, kSectors - 1));
+  }
+  // Files an edge that blocked a sight line from origin under every sector its ends span: a
+  // segment from origin crossing the edge points between them (the edge spans less than a half
+  // turn, so the shorter way round).
+  void remember_blocker(Vec2 origin, EdgeRef edge) const {
+    const Ring& points = ring(edge.ring);
+    const Vec2 c = points[edge.index] - origin;
+    const Vec2 d = points[edge.index + 1 == points.size() ? 0 : edge.index + 1] - origin;
+    std::size_t from = sector_of(c), to = sector_of(d);
+    if (c.x * d.y - c.y * d.x < 0.0) std::swap(from, to);
+    for (std::size_t s = from;; s = (s + 1) % kSectors) {
+      blockers_by_sector_[s].push_back(edge);
+      if (s == to) break;
+    }
+  }
   int cell_x(double x) const {
     return static_cast<int>(std::clamp((x - min_x_) * scale_x_, 0.0, side_ - 1.0));
   }
@@ -642,6 +680,8 @@ class RegionView {
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
   mutable EdgeRef last_blocker_{-1, 0};
+  mutable VertexRef sight_origin_{-1, 0};  // where the sight lines of blockers_by_sector_ start
+  mutable std::array<std::vector<EdgeRef>, kSectors> blockers_by_sector_;
 };
 
 // The chain of ring from first to last (cyclic), cleaned of the repeated and collinear vertices
