@@ -499,11 +499,11 @@ class RegionView {
   Vec2 at(VertexRef v) const { return ring(v.ring)[v.index]; }
   Vec2 prev(VertexRef v) const {
     const Ring& r = ring(v.ring);
-    return r[(v.index + r.size() - 1) % r.size()];
+    return r[prev_index(v.index, r.size())];
   }
   Vec2 next(VertexRef v) const {
     const Ring& r = ring(v.ring);
-    return r[(v.index + 1) % r.size()];
+    return r[next_index(v.index, r.size())];
   }
   int ring_count() const { return 1 + static_cast<int>(region_.holes.size()); }
 
@@ -610,28 +610,34 @@ class RegionView {
     scale_x_ = max_x_ > min_x_ ? side_ / (max_x_ - min_x_) : 0.0;
     scale_y_ = max_y_ > min_y_ ? side_ / (max_y_ - min_y_) : 0.0;
     edge_start_.assign(static_cast<std::size_t>(side_ * side_ + 1), 0);
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<int> fill;
-      if (pass == 1) {
-        for (std::size_t c = 1; c < edge_start_.size(); ++c) edge_start_[c] += edge_start_[c - 1];
-        edges_.resize(static_cast<std::size_t>(edge_start_.back()));
-        fill.assign(edge_start_.begin(), edge_start_.end() - 1);
+    auto cell_index = [&](int x, int y) { return static_cast<std::size_t>(y * side_ + x); };
+    // Each edge's cell range, computed once for both the count and the fill.
+    struct CellSpan {
+      int x0, x1, y0, y1;
+    };
+    std::vector<CellSpan> spans;
+    spans.reserve(count);
+    for (int r = 0; r < ring_count(); ++r) {
+      const Ring& points = ring(r);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec2 c = points[i], d = points[i + 1 == points.size() ? 0 : i + 1];
+        const CellSpan span{cell_x(std::min(c.x, d.x)), cell_x(std::max(c.x, d.x)),
+                            cell_y(std::min(c.y, d.y)), cell_y(std::max(c.y, d.y))};
+        spans.push_back(span);
+        for (int y = span.y0; y <= span.y1; ++y) {
+          for (int x = span.x0; x <= span.x1; ++x) ++edge_start_[cell_index(x, y) + 1];
+        }
       }
-      for (int r = 0; r < ring_count(); ++r) {
-        const Ring& points = ring(r);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-          const Vec2 c = points[i], d = points[i + 1 == points.size() ? 0 : i + 1];
-          const int x0 = cell_x(std::min(c.x, d.x)), x1 = cell_x(std::max(c.x, d.x));
-          const int y0 = cell_y(std::min(c.y, d.y)), y1 = cell_y(std::max(c.y, d.y));
-          for (int y = y0; y <= y1; ++y) {
-            for (int x = x0; x <= x1; ++x) {
-              const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
-              if (pass == 0) {
-                ++edge_start_[cell + 1];
-              } else {
-                edges_[static_cast<std::size_t>(fill[cell]++)] = {r, i};
-              }
-            }
+    }
+    for (std::size_t c = 1; c < edge_start_.size(); ++c) edge_start_[c] += edge_start_[c - 1];
+    edges_.resize(static_cast<std::size_t>(edge_start_.back()));
+    std::vector<int> fill(edge_start_.begin(), edge_start_.end() - 1);
+    const CellSpan* span = spans.data();
+    for (int r = 0; r < ring_count(); ++r) {
+      for (std::size_t i = 0; i < ring(r).size(); ++i, ++span) {
+        for (int y = span->y0; y <= span->y1; ++y) {
+          for (int x = span->x0; x <= span->x1; ++x) {
+            edges_[static_cast<std::size_t>(fill[cell_index(x, y)]++)] = {r, i};
           }
         }
       }
@@ -846,20 +852,27 @@ bool scores_before(const ScoredVertex& u, const ScoredVertex& v) {
   return u.score != v.score ? u.score > v.score : u.index < v.index;
 }
 
-// The first candidate, in the order of exact(index) scores, that accept takes. The candidates
-// come with provisional scores within 1e-9 (relative) of the exact ones, so the best exact score
-// known is final once it beats every provisional score left by more than that: exact() runs on a
-// few candidates only.
+// The first candidate, in the order of exact(index) scores, that accept takes: the best scored
+// of all it takes. The candidates come with provisional scores within 1e-9 (relative) of the exact
+// ones, so the best exact score known is final once it beats every provisional score left by more
+// than that: exact() runs on a few candidates only.
+// A search refused by its first few candidates is usually refused by all (a hole vertex that sees
+// no vertex of ∂P0), and refusals do not depend on the order: the rest is then searched unsorted,
+// skipping the candidates that cannot beat the best one taken.
 template <typename Exact, typename Accept>
 std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& provisional,
                                                    Exact&& exact, Accept&& accept) {
   auto after = [](const ScoredVertex& u, const ScoredVertex& v) { return scores_before(v, u); };
+  auto may_beat = [](double provisional_score, const ScoredVertex& best) {
+    return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
+  };
   std::make_heap(provisional.begin(), provisional.end(), after);
   std::vector<ScoredVertex> scored;
-  for (auto end = provisional.end();;) {
+  auto end = provisional.end();
+  for (std::size_t tests_in_order = 16 + provisional.size() / 32; tests_in_order > 0;
+       --tests_in_order) {
     while (end != provisional.begin()) {
-      const double bound = provisional.front().score;
-      if (!scored.empty() && scored.front().score > bound + std::abs(bound) * 1e-9) break;
+      if (!scored.empty() && !may_beat(provisional.front().score, scored.front())) break;
       std::pop_heap(provisional.begin(), end, after);
       --end;
       scored.push_back({exact(end->index), end->index});
@@ -871,6 +884,19 @@ std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& pr
     scored.pop_back();
     if (accept(best.index)) return best.index;
   }
+  std::optional<ScoredVertex> best;
+  for (const ScoredVertex& candidate : scored) {
+    if ((!best || scores_before(candidate, *best)) && accept(candidate.index)) best = candidate;
+  }
+  // Heap order: the higher scores, likelier to prune the rest, come first.
+  for (auto it = provisional.begin(); it != end; ++it) {
+    if (best && !may_beat(it->score, *best)) continue;
+    if (!accept(it->index)) continue;
+    const ScoredVertex candidate{exact(it->index), it->index};
+    if (!best || scores_before(candidate, *best)) best = candidate;
+  }
+  if (!best) return std::nullopt;
+  return best->index;
 }
 
 // |b - a| by sqrt: within a few ulps of distance(a, b) (hypot), or exactly it where squaring
@@ -977,9 +1003,16 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
   for (std::size_t i = 0; i < hole.size(); ++i) {
     attempts.emplace_back(i, (i + hole.size() / 2) % hole.size());
   }
-  for (const auto& [p, q] : attempts) {
+  // A failed attempt fails again: the searches depend on p (and q) only.
+  constexpr std::size_t kNotSearched = kNone - 1;
+  std::vector<std::size_t> closest_visible_from(hole.size(), kNotSearched);
+  for (std::size_t a = 0; a < attempts.size(); ++a) {
+    const auto [p, q] = attempts[a];
     if (p == q) continue;
-    const std::size_t x = closest_visible(p, kNone);
+    if (a >= 2 && (attempts[a] == attempts[0] || attempts[a] == attempts[1])) continue;
+    if (closest_visible_from[p] == kNotSearched)
+      closest_visible_from[p] = closest_visible(p, kNone);
+    const std::size_t x = closest_visible_from[p];
     if (x == kNone) continue;
     const std::size_t y = best_second(p, x, q);
     if (y == kNone) continue;
