@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <numeric>
 
 namespace hullcook {
@@ -126,7 +125,10 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
   if (start_turn == 0) return convex_hull_indices(ring);
   // The deque holds the hull of the chain so far, counter-clockwise from bottom to top, with the
   // last added vertex at both ends.
-  const auto deque = std::make_unique_for_overwrite<std::size_t[]>(2 * n + 1);
+  // Kept per thread: decompositions take the hull of every component, and a fresh buffer of
+  // this size is an mmap and munmap for large rings.
+  thread_local std::vector<std::size_t> deque;
+  if (deque.size() < 2 * n + 1) deque.resize(2 * n + 1);
   std::size_t bottom = n, top = n + 3;
   deque[bottom] = deque[top] = vertex(2);
   deque[bottom + 1] = start_turn > 0 ? vertex(0) : vertex(1);
