@@ -254,12 +254,13 @@ struct SweepEvent {
 };
 
 struct MonotoneScratch {
-  std::vector<SweepEvent> events;  // vertices from top to bottom
-  std::vector<int> status;         // left-boundary edges crossing the sweep line, west to east
-  std::vector<int> helper;         // per edge i (i -> i + 1): its helper vertex
-  std::vector<char> is_merge;      // per vertex
-  std::vector<int> fan_start;      // per vertex: its first entry in fan (CSR), fan_start[n] = end
-  std::vector<int> fan;            // per vertex: its neighbours ccw from next to prev
+  std::vector<SweepEvent> events, merged;  // vertices from top to bottom, and merge space
+  std::vector<std::size_t> run_ends;
+  std::vector<int> status;     // left-boundary edges crossing the sweep line, west to east
+  std::vector<int> helper;     // per edge i (i -> i + 1): its helper vertex
+  std::vector<char> is_merge;  // per vertex
+  std::vector<int> fan_start;  // per vertex: its first entry in fan (CSR), fan_start[n] = end
+  std::vector<int> fan;        // per vertex: its neighbours ccw from next to prev
   std::vector<std::pair<int, int>> diagonals;
   std::vector<char> used;  // per fan entry: the half-edge has been walked
   std::vector<int> piece, chain_order, stack;
@@ -353,6 +354,43 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   return true;
 }
 
+// The vertices from top to bottom. A boundary runs up and down in long stretches: the sort
+// merges those runs, O(n log r) for r runs, instead of sorting from scratch.
+void sort_from_top(const std::vector<Vec2>& polygon, std::vector<SweepEvent>& events,
+                   std::vector<SweepEvent>& merged, std::vector<std::size_t>& run_ends) {
+  const std::size_t n = polygon.size();
+  events.resize(n);
+  for (std::size_t i = 0; i < n; ++i) events[i] = {polygon[i], static_cast<int>(i)};
+  auto before = [](const SweepEvent& a, const SweepEvent& b) { return is_above(a.point, b.point); };
+  run_ends.clear();
+  for (std::size_t start = 0; start < n;) {
+    std::size_t end = start + 1;
+    if (end < n && before(events[end], events[start])) {
+      while (end < n && before(events[end], events[end - 1])) ++end;
+      std::reverse(events.begin() + std::ptrdiff_t(start), events.begin() + std::ptrdiff_t(end));
+    } else {
+      while (end < n && !before(events[end], events[end - 1])) ++end;
+    }
+    run_ends.push_back(end);
+    start = end;
+  }
+  merged.resize(n);
+  while (run_ends.size() > 1) {
+    std::size_t kept = 0, start = 0;
+    for (std::size_t r = 0; r < run_ends.size(); r += 2) {
+      const std::size_t middle = run_ends[r];
+      const std::size_t end = r + 1 < run_ends.size() ? run_ends[r + 1] : middle;
+      std::merge(events.begin() + std::ptrdiff_t(start), events.begin() + std::ptrdiff_t(middle),
+                 events.begin() + std::ptrdiff_t(middle), events.begin() + std::ptrdiff_t(end),
+                 merged.begin() + std::ptrdiff_t(start), before);
+      run_ends[kept++] = end;
+      start = end;
+    }
+    run_ends.resize(kept);
+    events.swap(merged);
+  }
+}
+
 // The sweep of de Berg et al. (Computational Geometry, ch. 3) adds diagonals at split and merge
 // vertices; the faces are then monotone pieces. Fills triangles, or returns false (triangles
 // unspecified) on input the sweep does not handle: repeated points, or a ring that is not simple.
@@ -363,12 +401,8 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
   auto next = [&](int v) { return v + 1 == n ? 0 : v + 1; };
   auto prev = [&](int v) { return v == 0 ? n - 1 : v - 1; };
-  // Sorting the points themselves, not indices into them, keeps the comparisons in cache.
   std::vector<SweepEvent>& events = scratch.events;
-  events.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) events[static_cast<std::size_t>(i)] = {at(i), i};
-  std::sort(events.begin(), events.end(),
-            [](const SweepEvent& a, const SweepEvent& b) { return is_above(a.point, b.point); });
+  sort_from_top(polygon, events, scratch.merged, scratch.run_ends);
   for (std::size_t i = 1; i < events.size(); ++i) {
     if (events[i - 1].point == events[i].point) return false;
   }
