@@ -359,9 +359,10 @@ class VertexGrid {
     });
   }
 
-  // The closest vertex to point on every ring but skip_ring, as nearest_by_scan finds it; nullopt
-  // where squared distances could mislead (then scan).
-  std::optional<NearVertex> nearest(Vec2 point, int skip_ring) const {
+  // The closest vertex to point on the rings that searched(ring id) takes, as a scan finds it;
+  // nullopt where squared distances could mislead (then scan).
+  template <typename Searched>
+  std::optional<NearVertex> nearest(Vec2 point, Searched&& searched) const {
     if (cell_start_.empty()) return std::nullopt;
     const int column = column_of(point.x), row = row_of(point.y);
     NearVertex best;
@@ -370,7 +371,7 @@ class VertexGrid {
       const std::size_t cell = static_cast<std::size_t>(y * columns_ + x);
       for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         const Entry& entry = entries_[static_cast<std::size_t>(k)];
-        if (entry.ring == skip_ring) continue;
+        if (!searched(entry.ring)) continue;
         const Vec2 offset = entry.point - point;
         const double squared = offset.x * offset.x + offset.y * offset.y;
         if (squared > best_squared * kSquaredMargin) continue;
@@ -444,7 +445,7 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     const auto [p, q] = extremes[h] = principal_axis_extremes(hole);
     const int hole_ring = static_cast<int>(h + 1);
     auto nearest = [&](Vec2 point) {
-      const std::optional<NearVertex> found = grid.nearest(point, hole_ring);
+      const auto found = grid.nearest(point, [&](int ring) { return ring != hole_ring; });
       return found ? *found : nearest_by_scan(region, point, hole_ring);
     };
     holes[h] = closest_to_ends(p, q, nearest(hole[p]), nearest(hole[q]));
@@ -453,10 +454,13 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
   auto outer_fallback = [&](std::size_t h) {
     const Ring& hole = region.holes[h];
     const auto [p, q] = extremes[h];
-    NearVertex from_p, from_q;
-    scan_ring(region.outer, 0, hole[p], from_p);
-    scan_ring(region.outer, 0, hole[q], from_q);
-    return closest_to_ends(p, q, from_p, from_q);
+    auto nearest_on_outer = [&](Vec2 point) {
+      if (const auto found = grid.nearest(point, [](int ring) { return ring == 0; })) return *found;
+      NearVertex best;
+      scan_ring(region.outer, 0, point, best);
+      return best;
+    };
+    return closest_to_ends(p, q, nearest_on_outer(hole[p]), nearest_on_outer(hole[q]));
   };
   // Depth through the chain of closest vertices (Fig. 12(b)); a cycle falls back to ∂P0.
   std::vector<int> state(k, 0);  // 0 new, 1 in progress, 2 done
