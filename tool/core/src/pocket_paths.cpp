@@ -100,22 +100,33 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
     }
     const Vec2 pw = point(w);
     const int apex = step.apex;
-    int wrap = -1;
-    for (int j = step.low; j < apex; ++j) {
-      if (turn(f(j + 1), f(j), pw) > 0) {
-        wrap = j;
-        break;
+    // Where w's path leaves the funnel: the first left-chain vertex whose outgoing edge w is
+    // beyond, else the last right-chain one, else the apex. Each chain is convex, so its test
+    // changes value once along it: binary searches.
+    int wrap = apex;
+    int low = step.low, high = apex;  // first j in [low, apex) with w beyond edge j
+    while (low < high) {
+      const int middle = low + (high - low) / 2;
+      if (turn(f(middle + 1), f(middle), pw) > 0) {
+        high = middle;
+      } else {
+        low = middle + 1;
       }
     }
-    if (wrap < 0) {
-      for (int k = step.high; k > apex; --k) {
-        if (turn(f(k - 1), f(k), pw) < 0) {
-          wrap = k;
-          break;
+    if (low < apex) {
+      wrap = low;
+    } else {
+      low = apex + 1, high = step.high + 1;  // first k in (apex, high] with w not beyond edge k
+      while (low < high) {
+        const int middle = low + (high - low) / 2;
+        if (turn(f(middle - 1), f(middle), pw) < 0) {
+          low = middle + 1;
+        } else {
+          high = middle;
         }
       }
+      if (low > apex + 1) wrap = low - 1;
     }
-    if (wrap < 0) wrap = apex;
     const int predecessor = f(wrap);
     if (predecessor == kInfinity) {
       const Vec2 d = pw - s;
