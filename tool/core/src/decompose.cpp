@@ -729,8 +729,19 @@ std::size_t cut_chain(const Ring& ring, std::size_t first, std::size_t last, Rin
 // region and off the cuts (a vertex of a hole the cuts do not touch): it lies inside exactly one
 // piece, so only the smaller ring is searched.
 bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
-  if (first.size() <= second.size()) return locate_point(first, p) == Location::inside;
-  return locate_point(second, p) != Location::inside;
+  // locate_point's crossing count without its test for p on each edge: p is on neither ring.
+  auto inside = [p](const Ring& ring) {
+    bool odd = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const Vec2 a = ring[j], b = ring[i];
+      if ((a.y > p.y) != (b.y > p.y)) {
+        const int side = detail::fast_orientation(a, b, p);
+        if ((b.y > a.y) ? side > 0 : side < 0) odd = !odd;
+      }
+    }
+    return odd;
+  };
+  return first.size() <= second.size() ? inside(first) : !inside(second);
 }
 
 // The hint (see HullHint) of a child of size vertices whose vertex k is the parent's vertex
