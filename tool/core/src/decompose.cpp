@@ -623,14 +623,23 @@ class RegionView {
     spans.reserve(count);
     for (int r = 0; r < ring_count(); ++r) {
       const Ring& points = ring(r);
+      // The cells are monotone in the coordinates: an edge spans its end points' cells, each
+      // computed once.
+      const int first_x = cell_x(points[0].x), first_y = cell_y(points[0].y);
+      int x = first_x, y = first_y;
       for (std::size_t i = 0; i < points.size(); ++i) {
-        const Vec2 c = points[i], d = points[i + 1 == points.size() ? 0 : i + 1];
-        const CellSpan span{cell_x(std::min(c.x, d.x)), cell_x(std::max(c.x, d.x)),
-                            cell_y(std::min(c.y, d.y)), cell_y(std::max(c.y, d.y))};
+        const bool last = i + 1 == points.size();
+        const int next_x = last ? first_x : cell_x(points[i + 1].x);
+        const int next_y = last ? first_y : cell_y(points[i + 1].y);
+        const CellSpan span{std::min(x, next_x), std::max(x, next_x), std::min(y, next_y),
+                            std::max(y, next_y)};
         spans.push_back(span);
-        for (int y = span.y0; y <= span.y1; ++y) {
-          for (int x = span.x0; x <= span.x1; ++x) ++edge_start_[cell_index(x, y) + 1];
+        for (int row = span.y0; row <= span.y1; ++row) {
+          for (int column = span.x0; column <= span.x1; ++column) {
+            ++edge_start_[cell_index(column, row) + 1];
+          }
         }
+        x = next_x, y = next_y;
       }
     }
     for (std::size_t c = 1; c < edge_start_.size(); ++c) edge_start_[c] += edge_start_[c - 1];
