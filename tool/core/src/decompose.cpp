@@ -434,19 +434,27 @@ HoleConcavity closest_to_ends(std::size_t p, std::size_t q, const NearVertex& fr
   return info;
 }
 
+constexpr std::size_t kHolesForVertexGrid = 3;
+
 std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcavity& outer) {
   const std::size_t k = region.holes.size();
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
   std::vector<std::pair<std::size_t, std::size_t>> extremes(k);
-  const VertexGrid grid(region);
+  // The grid pays for its building from a few searches on: a lone hole's are plain scans.
+  std::optional<VertexGrid> grid;
+  if (k >= kHolesForVertexGrid) grid.emplace(region);
   for (std::size_t h = 0; h < k; ++h) {
     const Ring& hole = region.holes[h];
     const auto [p, q] = extremes[h] = principal_axis_extremes(hole);
     const int hole_ring = static_cast<int>(h + 1);
     auto nearest = [&](Vec2 point) {
-      const auto found = grid.nearest(point, [&](int ring) { return ring != hole_ring; });
-      return found ? *found : nearest_by_scan(region, point, hole_ring);
+      if (grid) {
+        if (const auto found = grid->nearest(point, [&](int ring) { return ring != hole_ring; })) {
+          return *found;
+        }
+      }
+      return nearest_by_scan(region, point, hole_ring);
     };
     holes[h] = closest_to_ends(p, q, nearest(hole[p]), nearest(hole[q]));
   }
@@ -455,7 +463,11 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     const Ring& hole = region.holes[h];
     const auto [p, q] = extremes[h];
     auto nearest_on_outer = [&](Vec2 point) {
-      if (const auto found = grid.nearest(point, [](int ring) { return ring == 0; })) return *found;
+      if (grid) {
+        if (const auto found = grid->nearest(point, [](int ring) { return ring == 0; })) {
+          return *found;
+        }
+      }
       NearVertex best;
       scan_ring(region.outer, 0, point, best);
       return best;
