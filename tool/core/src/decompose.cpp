@@ -441,7 +441,7 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
   std::vector<std::pair<std::size_t, std::size_t>> extremes(k);
-  // The grid pays for its building from a few searches on: a lone hole's are plain scans.
+  // The grid pays for its building from three holes on; fewer are searched by plain scans.
   std::optional<VertexGrid> grid;
   if (k >= kHolesForVertexGrid) grid.emplace(region);
   for (std::size_t h = 0; h < k; ++h) {
@@ -523,21 +523,36 @@ class RegionView {
   }
   int ring_count() const { return 1 + static_cast<int>(region_.holes.size()); }
 
-  // The open segment from v toward target leaves v into the interior (O'Rourke's InCone).
-  bool in_cone(VertexRef v, Vec2 target) const {
+  // The interior angle at a vertex.
+  struct Cone {
+    Vec2 apex, before, after;
+    bool convex;
+  };
+  Cone cone(VertexRef v) const {
     const Vec2 a = at(v), before = prev(v), after = next(v);
-    if (detail::fast_orientation(a, after, before) >= 0) {
-      return detail::fast_orientation(a, target, before) > 0 &&
-             detail::fast_orientation(target, a, after) > 0;
-    }
-    return !(detail::fast_orientation(a, target, after) >= 0 &&
-             detail::fast_orientation(target, a, before) >= 0);
+    return {a, before, after, detail::fast_orientation(a, after, before) >= 0};
   }
+  // The open segment from the apex toward target leaves it into the interior (O'Rourke's InCone).
+  static bool in_cone(const Cone& cone, Vec2 target) {
+    const Vec2 a = cone.apex;
+    if (cone.convex) {
+      return detail::fast_orientation(a, target, cone.before) > 0 &&
+             detail::fast_orientation(target, a, cone.after) > 0;
+    }
+    return !(detail::fast_orientation(a, target, cone.after) >= 0 &&
+             detail::fast_orientation(target, a, cone.before) >= 0);
+  }
+  bool in_cone(VertexRef v, Vec2 target) const { return in_cone(cone(v), target); }
 
   // u-v is a diagonal: inside at both ends and meeting no other edge, not even at a vertex.
   bool is_diagonal(VertexRef u, VertexRef v) const {
     const Vec2 a = at(u), b = at(v);
-    if (a == b || !in_cone(u, b) || !in_cone(v, a)) return false;
+    // The searches test many diagonals from one vertex.
+    if (cone_vertex_.ring != u.ring || cone_vertex_.index != u.index) {
+      cone_vertex_ = u;
+      cone_of_u_ = cone(u);
+    }
+    if (a == b || !in_cone(cone_of_u_, b) || !in_cone(v, a)) return false;
     const double min_x = std::min(a.x, b.x), max_x = std::max(a.x, b.x);
     const double min_y = std::min(a.y, b.y), max_y = std::max(a.y, b.y);
     auto blocks = [&](int r, std::size_t i) {
@@ -711,6 +726,8 @@ class RegionView {
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
   mutable EdgeRef last_blocker_{-1, 0};
+  mutable VertexRef cone_vertex_{-1, 0};  // whose cone cone_of_u_ is
+  mutable Cone cone_of_u_{};
   mutable VertexRef sight_origin_{-1, 0};  // where the sight lines of blockers_by_sector_ start
   mutable std::array<std::vector<EdgeRef>, kSectors> blockers_by_sector_;
 };
