@@ -830,24 +830,24 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
                                      std::size_t x, std::size_t q, std::size_t y) {
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
+  // The cyclic chain of ring from `from` to `to`, both included, appended to out.
+  auto append_chain = [](const Ring& ring, std::size_t from, std::size_t to, Ring& out) {
+    const auto begin = ring.begin();
+    if (from <= to) {
+      out.insert(out.end(), begin + std::ptrdiff_t(from), begin + std::ptrdiff_t(to) + 1);
+    } else {
+      out.insert(out.end(), begin + std::ptrdiff_t(from), ring.end());
+      out.insert(out.end(), begin, begin + std::ptrdiff_t(to) + 1);
+    }
+  };
   const std::size_t n = outer.size(), m = hole.size();
   Region first, second;
-  for (std::size_t k = x;; k = next_index(k, n)) {
-    first.outer.push_back(outer[k]);
-    if (k == y) break;
-  }
-  for (std::size_t k = q;; k = (k + 1) % m) {
-    first.outer.push_back(hole[k]);
-    if (k == p) break;
-  }
-  for (std::size_t k = y;; k = next_index(k, n)) {
-    second.outer.push_back(outer[k]);
-    if (k == x) break;
-  }
-  for (std::size_t k = p;; k = (k + 1) % m) {
-    second.outer.push_back(hole[k]);
-    if (k == q) break;
-  }
+  first.outer.reserve((y + n - x) % n + (p + m - q) % m + 2);
+  append_chain(outer, x, y, first.outer);
+  append_chain(hole, q, p, first.outer);
+  second.outer.reserve((x + n - y) % n + (q + m - p) % m + 2);
+  append_chain(outer, y, x, second.outer);
+  append_chain(hole, p, q, second.outer);
   remove_degenerate_vertices_in_place(first.outer);
   remove_degenerate_vertices_in_place(second.outer);
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
