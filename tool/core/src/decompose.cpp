@@ -825,31 +825,67 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   return {std::move(first), std::move(second)};
 }
 
+// remove_degenerate_vertices_in_place on rings made of chains of clean rings, in two steps:
+// append_without_degeneracies for each chain, then close_without_degeneracies. Only the seams
+// need its tests: three consecutive vertices of a clean ring are distinct and not collinear, so
+// once the last two vertices kept are a chain's, the rest of the chain is kept as it is.
+void append_without_degeneracies(const Ring& ring, std::size_t from, std::size_t to, Ring& out) {
+  const std::size_t n = ring.size();
+  for (std::size_t k = from, step = 0;; k = next_index(k, n), ++step) {
+    const std::size_t kept = out.size();
+    if (step >= 2 && kept >= 2 && out[kept - 1] == ring[prev_index(k, n)] &&
+        out[kept - 2] == ring[prev_index(prev_index(k, n), n)]) {
+      const auto begin = ring.begin();
+      if (k <= to) {
+        out.insert(out.end(), begin + std::ptrdiff_t(k), begin + std::ptrdiff_t(to) + 1);
+      } else {
+        out.insert(out.end(), begin + std::ptrdiff_t(k), ring.end());
+        out.insert(out.end(), begin, begin + std::ptrdiff_t(to) + 1);
+      }
+      return;
+    }
+    const Vec2 p = ring[k];
+    while (out.size() >= 2 && detail::fast_orientation(out[out.size() - 2], out.back(), p) == 0) {
+      out.pop_back();
+    }
+    if (out.empty() || out.back() != p) out.push_back(p);
+    if (k == to) return;
+  }
+}
+
+void close_without_degeneracies(Ring& out) {
+  bool changed = true;
+  while (changed && out.size() >= 3) {
+    changed = false;
+    if (out.back() == out.front()) {
+      out.pop_back();
+      changed = true;
+    } else if (detail::fast_orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
+      out.pop_back();
+      changed = true;
+    } else if (detail::fast_orientation(out.back(), out[0], out[1]) == 0) {
+      out.erase(out.begin());
+      changed = true;
+    }
+  }
+  if (out.size() == 2 && out[0] == out[1]) out.pop_back();
+}
+
 // Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole.
 std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::size_t p,
                                      std::size_t x, std::size_t q, std::size_t y) {
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
-  // The cyclic chain of ring from `from` to `to`, both included, appended to out.
-  auto append_chain = [](const Ring& ring, std::size_t from, std::size_t to, Ring& out) {
-    const auto begin = ring.begin();
-    if (from <= to) {
-      out.insert(out.end(), begin + std::ptrdiff_t(from), begin + std::ptrdiff_t(to) + 1);
-    } else {
-      out.insert(out.end(), begin + std::ptrdiff_t(from), ring.end());
-      out.insert(out.end(), begin, begin + std::ptrdiff_t(to) + 1);
-    }
-  };
   const std::size_t n = outer.size(), m = hole.size();
   Region first, second;
   first.outer.reserve((y + n - x) % n + (p + m - q) % m + 2);
-  append_chain(outer, x, y, first.outer);
-  append_chain(hole, q, p, first.outer);
+  append_without_degeneracies(outer, x, y, first.outer);
+  append_without_degeneracies(hole, q, p, first.outer);
+  close_without_degeneracies(first.outer);
   second.outer.reserve((x + n - y) % n + (q + m - p) % m + 2);
-  append_chain(outer, y, x, second.outer);
-  append_chain(hole, p, q, second.outer);
-  remove_degenerate_vertices_in_place(first.outer);
-  remove_degenerate_vertices_in_place(second.outer);
+  append_without_degeneracies(outer, y, x, second.outer);
+  append_without_degeneracies(hole, p, q, second.outer);
+  close_without_degeneracies(second.outer);
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];
