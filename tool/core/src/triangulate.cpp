@@ -5,13 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace hullcook::detail {
 
 namespace {
 
-// Reflex vertices bucketed in a uniform grid of about one cell per point, for triangle queries.
+// Reflex vertices bucketed in a uniform grid of about one cell per point, for box queries.
 // Items can be removed (a cell keeps its live items at its front), so that queries never visit
 // stale ones. The storage is reused from one polygon to the next.
 class ReflexGrid {
@@ -53,39 +52,14 @@ class ReflexGrid {
     slot_[static_cast<std::size_t>(item)] = -1;
   }
 
-  // True when hit(item) holds for some live item in a cell the triangle abc overlaps (box is its
-  // bounding box). Each row is scanned over the triangle's extent in it, widened by half a row and
-  // one cell so that rounding cannot leave a point's cell out: ear triangles are often long
-  // slivers whose box covers many cells.
+  // True when hit(item) holds for some live item in a cell the box overlaps.
   template <typename Hit>
-  bool any_in_triangle(const Vec2 (&abc)[3], double min_x, double max_x, double min_y, double max_y,
-                       Hit&& hit) const {
+  bool any_in_box(double min_x, double max_x, double min_y, double max_y, Hit&& hit) const {
     if (items_.empty() || max_x < min_x_ || min_x > max_x_ || max_y < min_y_ || min_y > max_y_) {
       return false;
     }
-    const int box_x0 = cell_x(min_x), box_x1 = cell_x(max_x);
-    const int y0 = cell_y(min_y), y1 = cell_y(max_y);
+    const int x0 = cell_x(min_x), x1 = cell_x(max_x), y0 = cell_y(min_y), y1 = cell_y(max_y);
     for (int y = y0; y <= y1; ++y) {
-      int x0 = box_x0, x1 = box_x1;
-      if (y0 < y1 && x1 - x0 > 2) {
-        const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
-        double low_x = std::numeric_limits<double>::infinity(), high_x = -low_x;
-        for (int e = 0; e < 3; ++e) {
-          const Vec2 p = abc[e], q = abc[e == 2 ? 0 : e + 1];
-          if (std::max(p.y, q.y) < low || std::min(p.y, q.y) > high) continue;
-          double u = p.x, w = q.x;
-          if (p.y != q.y) {
-            auto x_at = [&](double line) {
-              const double t = std::clamp((line - p.y) / (q.y - p.y), 0.0, 1.0);
-              return p.x + t * (q.x - p.x);
-            };
-            u = x_at(low), w = x_at(high);
-          }
-          low_x = std::min({low_x, u, w}), high_x = std::max({high_x, u, w});
-        }
-        if (low_x > high_x) continue;
-        x0 = std::max(x0, cell_x(low_x) - 1), x1 = std::min(x1, cell_x(high_x) + 1);
-      }
       const std::size_t row = static_cast<std::size_t>(y * side_);
       for (std::size_t c = row + static_cast<std::size_t>(x0);
            c <= row + static_cast<std::size_t>(x1); ++c) {
@@ -182,9 +156,9 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
       reflex_list.push_back(i);
     }
   }
-  // Reflex vertices in a uniform grid: an ear test visits only the cells its triangle covers. The
-  // set only shrinks (clipping never makes a convex vertex reflex), so the grid is built once and
-  // a vertex leaves it when it turns convex or is clipped.
+  // Reflex vertices in a uniform grid: an ear test visits only the cells its triangle's box covers.
+  // The set only shrinks (clipping never makes a convex vertex reflex), so the grid is built once
+  // and a vertex leaves it when it turns convex or is clipped.
   const bool use_grid = reflex_list.size() >= kGridFromReflexCount;
   ReflexGrid& grid = scratch.grid;
   if (use_grid) grid.reset(polygon, reflex_list);
@@ -198,8 +172,7 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
   auto is_ear = [&](int i) {
     const int a = P(i), c = N(i);
     if (detail::fast_orientation(at(a), at(i), at(c)) <= 0) return false;
-    const Vec2 abc[3] = {at(a), at(i), at(c)};
-    const Vec2 pa = abc[0], pb = abc[1], pc = abc[2];
+    const Vec2 pa = at(a), pb = at(i), pc = at(c);
     const double min_x = std::min({pa.x, pb.x, pc.x}), max_x = std::max({pa.x, pb.x, pc.x});
     const double min_y = std::min({pa.y, pb.y, pc.y}), max_y = std::max({pa.y, pb.y, pc.y});
     auto inside = [&](int r) {
@@ -209,7 +182,7 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
       return detail::fast_orientation(pa, pb, p) >= 0 && detail::fast_orientation(pb, pc, p) >= 0 &&
              detail::fast_orientation(pc, pa, p) >= 0;
     };
-    if (use_grid) return !grid.any_in_triangle(abc, min_x, max_x, min_y, max_y, inside);
+    if (use_grid) return !grid.any_in_box(min_x, max_x, min_y, max_y, inside);
     for (int r : reflex_list) {
       if (reflex[static_cast<std::size_t>(r)] && inside(r)) return false;
     }
