@@ -140,6 +140,35 @@ TEST(Triangulate, SweepHandlesCombsAndSpirals) {
   expect_sweep_triangulates(spiral, "spiral");
 }
 
+TEST(Triangulate, SweepHandlesNearDegenerateCoordinates) {
+  // Small stars far from the origin: most orientation tests fall to the exact arithmetic.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0;
+  for (int attempt = 0; attempt < 300; ++attempt) {
+    const double offset = std::ldexp(1.0, 20 + attempt % 24), radius = 1e-3 * (1 + attempt % 7);
+    const int n = 5 + attempt % 40;
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(unit(random) * 2 * M_PI);
+    std::sort(angles.begin(), angles.end());
+    Region region;
+    for (double a : angles) {
+      const double r = radius * (0.1 + 0.9 * unit(random));
+      region.outer.push_back({offset + r * std::cos(a), offset * 0.5 + r * std::sin(a)});
+    }
+    std::vector<Region> cleaned;
+    try {
+      cleaned = clean_and_validate({region}, "random");
+    } catch (const std::exception&) {
+      continue;
+    }
+    expect_sweep_triangulates(cleaned[0].outer, "attempt " + std::to_string(attempt));
+    if (HasFatalFailure()) return;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+}
+
 TEST(Triangulate, SweepHandlesEverySampleRing) {
   const auto root = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/polygons";
   int rings = 0;
