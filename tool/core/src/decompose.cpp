@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -545,7 +546,7 @@ class RegionView {
   bool in_cone(VertexRef v, Vec2 target) const { return in_cone(cone(v), target); }
 
   // u-v is a diagonal: inside at both ends and meeting no other edge, not even at a vertex.
-  bool is_diagonal(VertexRef u, VertexRef v) const {
+  bool is_diagonal(VertexRef u, VertexRef v) {
     const Vec2 a = at(u), b = at(v);
     // The searches test many diagonals from one vertex.
     if (cone_vertex_.ring != u.ring || cone_vertex_.index != u.index) {
@@ -553,73 +554,17 @@ class RegionView {
       cone_of_u_ = cone(u);
     }
     if (a == b || !in_cone(cone_of_u_, b) || !in_cone(v, a)) return false;
-    const double min_x = std::min(a.x, b.x), max_x = std::max(a.x, b.x);
-    const double min_y = std::min(a.y, b.y), max_y = std::max(a.y, b.y);
-    auto blocks = [&](int r, std::size_t i) {
-      const Ring& points = ring(r);
-      const std::size_t j = i + 1 == points.size() ? 0 : i + 1;
-      const Vec2 c = points[i], d = points[j];
-      if (std::max(c.x, d.x) < min_x || std::min(c.x, d.x) > max_x || std::max(c.y, d.y) < min_y ||
-          std::min(c.y, d.y) > max_y) {
-        return false;
-      }
-      auto is = [&](VertexRef w, std::size_t k) { return w.ring == r && w.index == k; };
-      if (is(u, i) || is(u, j) || is(v, i) || is(v, j)) return false;
-      return segments_intersect(a, b, c, d);
-    };
+    const Sight sight{
+        u, v, a, b, std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
     // The edge that blocked the previous candidate often blocks this one too.
-    if (last_blocker_.ring >= 0 && blocks(last_blocker_.ring, last_blocker_.index)) return false;
-    if (!edge_start_.empty()) {
-      // Sight lines from one vertex in one direction are mostly blocked by the same few edges.
-      if (sight_origin_.ring != u.ring || sight_origin_.index != u.index) {
-        for (std::vector<EdgeRef>& sector : blockers_by_sector_) sector.clear();
-        sight_origin_ = u;
-      }
-      for (const EdgeRef edge : blockers_by_sector_[sector_of(b - a)]) {
-        if (blocks(edge.ring, edge.index)) {
-          last_blocker_ = edge;
-          return false;
-        }
-      }
-      // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
-      // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
-      // cell so that rounding cannot leave X's cell out.
-      // The cells are visited from a toward b: a hole's candidates are mostly blocked by the
-      // holes around it, near a, and the set of cells (so the answer) does not depend on the order.
-      const int y0 = cell_y(min_y), y1 = cell_y(max_y);
-      const bool rows_down = a.y > b.y, columns_left = a.x > b.x;
-      for (int row = 0; row <= y1 - y0; ++row) {
-        const int y = rows_down ? y1 - row : y0 + row;
-        int x0 = cell_x(min_x), x1 = cell_x(max_x);
-        if (y0 < y1 && a.y != b.y) {
-          const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
-          auto x_at = [&](double line) {
-            const double t = std::clamp((line - a.y) / (b.y - a.y), 0.0, 1.0);
-            return a.x + t * (b.x - a.x);
-          };
-          const double u = x_at(low), w = x_at(high);
-          x0 = std::max(x0, cell_x(std::min(u, w)) - 1);
-          x1 = std::min(x1, cell_x(std::max(u, w)) + 1);
-        }
-        for (int column = 0; column <= x1 - x0; ++column) {
-          const int x = columns_left ? x1 - column : x0 + column;
-          const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
-          for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
-            const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
-            if (blocks(edge.ring, edge.index)) {
-              last_blocker_ = edge;
-              remember_blocker(a, edge);
-              return false;
-            }
-          }
-        }
-      }
-      return true;
+    if (last_blocker_.ring >= 0 && blocks(sight, last_blocker_.ring, last_blocker_.index)) {
+      return false;
     }
+    if (!edge_boxes_.empty()) return is_clear_by_index(sight);
     for (int r = 0; r < ring_count(); ++r) {
       for (std::size_t i = 0; i < ring(r).size(); ++i) {
-        if (blocks(r, i)) {
-          last_blocker_ = {r, i};
+        if (blocks(sight, r, i)) {
+          last_blocker_ = {r, static_cast<std::uint32_t>(i)};
           return false;
         }
       }
@@ -627,7 +572,24 @@ class RegionView {
     return true;
   }
 
-  // Buckets every edge in a uniform grid, for views that test many diagonals.
+  // For views that test many diagonals from a few vertices: caches blockers by direction, and
+  // scans the edges' boxes until scans are frequent enough to pay for a grid.
+  void expect_many_tests() {
+    std::size_t count = 0;
+    for (int r = 0; r < ring_count(); ++r) count += ring(r).size();
+    edge_boxes_.reserve(count);
+    for (int r = 0; r < ring_count(); ++r) {
+      const Ring& points = ring(r);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec2 c = points[i], d = points[next_index(i, points.size())];
+        edge_boxes_.push_back(
+            {std::min(c.x, d.x), std::max(c.x, d.x), std::min(c.y, d.y), std::max(c.y, d.y)});
+      }
+    }
+  }
+
+ private:
+  // Buckets every edge in a uniform grid.
   void index_edges() {
     std::size_t count = 0;
     for (int r = 0; r < ring_count(); ++r) count += ring(r).size();
@@ -677,18 +639,109 @@ class RegionView {
       for (std::size_t i = 0; i < ring(r).size(); ++i, ++span) {
         for (int y = span->y0; y <= span->y1; ++y) {
           for (int x = span->x0; x <= span->x1; ++x) {
-            edges_[static_cast<std::size_t>(fill[cell_index(x, y)]++)] = {r, i};
+            edges_[static_cast<std::size_t>(fill[cell_index(x, y)]++)] = {
+                r, static_cast<std::uint32_t>(i)};
           }
         }
       }
     }
   }
 
- private:
-  struct EdgeRef {
+  struct EdgeRef {  // 8 bytes: the grid holds a few per edge
     int ring;
-    std::size_t index;
+    std::uint32_t index;
   };
+  // A tested diagonal a-b from u to v, with its box.
+  struct Sight {
+    VertexRef u, v;
+    Vec2 a, b;
+    double min_x, max_x, min_y, max_y;
+  };
+  // Edge i of ring r meets the sight line (edges at its ends do not count).
+  [[gnu::always_inline]] bool blocks(const Sight& sight, int r, std::size_t i) const {
+    const Ring& points = ring(r);
+    const std::size_t j = i + 1 == points.size() ? 0 : i + 1;
+    const Vec2 c = points[i], d = points[j];
+    if (std::max(c.x, d.x) < sight.min_x || std::min(c.x, d.x) > sight.max_x ||
+        std::max(c.y, d.y) < sight.min_y || std::min(c.y, d.y) > sight.max_y) {
+      return false;
+    }
+    auto is = [&](VertexRef w, std::size_t k) { return w.ring == r && w.index == k; };
+    if (is(sight.u, i) || is(sight.u, j) || is(sight.v, i) || is(sight.v, j)) return false;
+    return segments_intersect(sight.a, sight.b, c, d);
+  }
+
+  // is_diagonal's search for a blocking edge in views that expect many tests. Out of line: it
+  // would weigh on the inlining of the plain views' scan.
+  [[gnu::noinline]] bool is_clear_by_index(const Sight& sight) {
+    const Vec2 a = sight.a, b = sight.b;
+    const double min_x = sight.min_x, max_x = sight.max_x;
+    const double min_y = sight.min_y, max_y = sight.max_y;
+    // Sight lines from one vertex in one direction are mostly blocked by the same few edges.
+    if (sight_origin_.ring != sight.u.ring || sight_origin_.index != sight.u.index) {
+      for (std::vector<EdgeRef>& sector : blockers_by_sector_) sector.clear();
+      sight_origin_ = sight.u;
+    }
+    for (const EdgeRef edge : blockers_by_sector_[sector_of(b - a)]) {
+      if (blocks(sight, edge.ring, edge.index)) {
+        last_blocker_ = edge;
+        return false;
+      }
+    }
+    if (edge_start_.empty() && ++scans_ > kScansBeforeGrid) index_edges();
+    if (edge_start_.empty()) {
+      const EdgeBox* box = edge_boxes_.data();
+      for (int r = 0; r < ring_count(); ++r) {
+        for (std::size_t i = 0; i < ring(r).size(); ++i, ++box) {
+          if (box->max_x < min_x || box->min_x > max_x || box->max_y < min_y ||
+              box->min_y > max_y) {
+            continue;
+          }
+          if (blocks(sight, r, i)) {
+            last_blocker_ = {r, static_cast<std::uint32_t>(i)};
+            remember_blocker(a, last_blocker_);
+            return false;
+          }
+        }
+      }
+      return true;
+    }
+    // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
+    // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
+    // cell so that rounding cannot leave X's cell out.
+    // The cells are visited from a toward b: a hole's candidates are mostly blocked by the
+    // holes around it, near a, and the set of cells (so the answer) does not depend on the order.
+    const int y0 = cell_y(min_y), y1 = cell_y(max_y);
+    const bool rows_down = a.y > b.y, columns_left = a.x > b.x;
+    for (int row = 0; row <= y1 - y0; ++row) {
+      const int y = rows_down ? y1 - row : y0 + row;
+      int x0 = cell_x(min_x), x1 = cell_x(max_x);
+      if (y0 < y1 && a.y != b.y) {
+        const double low = min_y_ + (y - 0.5) / scale_y_, high = min_y_ + (y + 1.5) / scale_y_;
+        auto x_at = [&](double line) {
+          const double t = std::clamp((line - a.y) / (b.y - a.y), 0.0, 1.0);
+          return a.x + t * (b.x - a.x);
+        };
+        const double u = x_at(low), w = x_at(high);
+        x0 = std::max(x0, cell_x(std::min(u, w)) - 1);
+        x1 = std::min(x1, cell_x(std::max(u, w)) + 1);
+      }
+      for (int column = 0; column <= x1 - x0; ++column) {
+        const int x = columns_left ? x1 - column : x0 + column;
+        const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
+        for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
+          const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
+          if (blocks(sight, edge.ring, edge.index)) {
+            last_blocker_ = edge;
+            remember_blocker(a, edge);
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
   // Sectors of directions around a vertex, cut by a pseudo-angle (monotone in the angle, without
   // trigonometry). Their bounds need not be exact: a cached edge is always tested again.
   static constexpr int kSectors = 64;
@@ -725,6 +778,12 @@ class RegionView {
   double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0, scale_x_ = 0.0, scale_y_ = 0.0;
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
+  struct EdgeBox {
+    double min_x, max_x, min_y, max_y;
+  };
+  std::vector<EdgeBox> edge_boxes_;  // per edge in ring order (empty: not expecting many tests)
+  static constexpr int kScansBeforeGrid = 4;
+  int scans_ = 0;
   mutable EdgeRef last_blocker_{-1, 0};
   mutable VertexRef cone_vertex_{-1, 0};  // whose cone cone_of_u_ is
   mutable Cone cone_of_u_{};
@@ -1004,7 +1063,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        std::pair<HullHint, HullHint>& hints) {
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
-  const RegionView view(region);
+  RegionView view(region);
   const Vec2 a = ring[prev_index(r, n)], pr = ring[r], b = ring[next_index(r, n)];
   std::vector<ScoredVertex> resolving, others;
   auto eq8 = [&](std::size_t i, double length) {
@@ -1052,7 +1111,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
                                                       std::size_t h,
                                                       const DecomposeSettings& settings) {
   RegionView view(region);
-  view.index_edges();
+  view.expect_many_tests();
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const int hole_ring = static_cast<int>(h + 1);
