@@ -100,8 +100,9 @@ struct PocketKeyHash {
 };
 using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
 
-// The hull of a ring, using what a hint inherits (see HullHint). Sets on_hull: hull vertices and
-// the vertices exactly on a hull edge (they split its bridge, so every pocket stays simple).
+// The hull of a ring, using what a hint inherits (see HullHint). Sets on_hull: 2 for hull vertices,
+// 1 for the parent's points exactly on a hull edge the child keeps; the other points exactly on a
+// hull edge are left to measure_outer.
 std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
                                         std::vector<char>& on_hull) {
   const std::size_t n = ring.size();
@@ -148,12 +149,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
       for (std::size_t i = s + 1; i < t; ++i) on_hull[i] = (*hint)[i] == kParentHullPoint;
       continue;
     }
-    if (s == known_last && t == known_first && (*hint)[next_index(s, n)] == kInsideKeptPocket) {
-      continue;  // the bridge of the pocket the child's ends lie in: nothing on it
-    }
-    for (std::size_t i = next_index(s, n); i != t; i = next_index(i, n)) {
-      if (detail::fast_orientation(ring[s], ring[t], ring[i]) == 0) on_hull[i] = 1;
-    }
+    // Points on a fresh edge are found by measure_outer, which evaluates the same orientations.
   }
   return hull;
 }
@@ -195,29 +191,57 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   result.vertex.assign(n, 0.0);
   const std::vector<std::size_t> hull = hull_with_hint(ring, hint, result.on_hull);
   if (hull.size() < 3) return result;
-  const std::vector<char>& on_hull = result.on_hull;
+  std::vector<char>& on_hull = result.on_hull;
   // The hull points in ring order; each pair of consecutive ones with a gap bounds a pocket.
   thread_local std::vector<std::size_t> hull_points;
-  hull_points.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (on_hull[i]) hull_points.push_back(i);
-  }
-  thread_local std::vector<Vec2> chain;
-  double best_witness_value = -1.0;
-  for (std::size_t h = 0; h < hull_points.size(); ++h) {
-    const std::size_t s = hull_points[h];
-    const std::size_t t = hull_points[h + 1 == hull_points.size() ? 0 : h + 1];
-    if (t == next_index(s, n)) continue;
+  auto collect_hull_points = [&] {
+    hull_points.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (on_hull[i]) hull_points.push_back(i);
+    }
+  };
+  auto for_each_pocket = [&](auto&& visit) {
+    for (std::size_t h = 0; h < hull_points.size(); ++h) {
+      const std::size_t s = hull_points[h];
+      const std::size_t t = hull_points[h + 1 == hull_points.size() ? 0 : h + 1];
+      if (t != next_index(s, n)) visit(s, t);
+    }
+  };
+  // SL: distance to the bridge's line. A vertex exactly on the line is a point of the hull edge:
+  // it becomes a hull point (marked kFoundOnEdge for now), splitting the bridge so that every
+  // pocket stays simple; the pockets it splits are measured again with their own bridges.
+  constexpr char kFoundOnEdge = 3;
+  auto measure_straight_line = [&](std::size_t s, std::size_t t) {
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
     const double length = std::hypot(along.x, along.y);
-    // SL: distance to the bridge's line.
-    double sl_max = 0.0;
+    bool found = false;
     for_each_between(s, t, n, [&](std::size_t i) {
-      const double d = std::abs(detail::fast_orient2d(bs, bt, ring[i])) / length;
-      result.vertex[i] = d;
-      sl_max = std::max(sl_max, d);
+      const double determinant = detail::fast_orient2d(bs, bt, ring[i]);
+      if (determinant == 0.0) on_hull[i] = kFoundOnEdge, found = true;
+      result.vertex[i] = std::abs(determinant) / length;
     });
+    return found;
+  };
+  collect_hull_points();
+  bool found_on_edge = false;
+  for_each_pocket([&](std::size_t s, std::size_t t) {
+    if (measure_straight_line(s, t)) found_on_edge = true;
+  });
+  if (found_on_edge) {
+    collect_hull_points();
+    for_each_pocket([&](std::size_t s, std::size_t t) {
+      if (on_hull[s] == kFoundOnEdge || on_hull[t] == kFoundOnEdge) measure_straight_line(s, t);
+    });
+    for (char& mark : on_hull) mark = mark == kFoundOnEdge ? 1 : mark;
+  }
+  thread_local std::vector<Vec2> chain;
+  double best_witness_value = -1.0;
+  for_each_pocket([&](std::size_t s, std::size_t t) {
+    const Vec2 bs = ring[s], bt = ring[t];
+    const Vec2 along = bt - bs;
+    double sl_max = 0.0;
+    for_each_between(s, t, n, [&](std::size_t i) { sl_max = std::max(sl_max, result.vertex[i]); });
     // Observation 5.5: an edge whose outward normal opposes the bridge's.
     const bool hazard = measure != Measure::sl && any_from(s, t, n, [&](std::size_t i) {
                           const Vec2 e = ring[next_index(i, n)] - ring[i];
@@ -263,7 +287,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
         result.witness = i;
       }
     });
-  }
+  });
   return result;
 }
 
