@@ -21,10 +21,16 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
   const double length = std::hypot(along.x, along.y);
   const Vec2 normal{-along.y / length, along.x / length};  // into the pocket
 
-  // The pocket polygon q[0..m] runs clockwise; triangulate it reversed (counter-clockwise).
+  // The pocket polygon q[0..m] runs clockwise; triangulate it reversed (counter-clockwise). The
+  // triangulation sweeps along y, and a pocket's chain runs up and down least along its bridge:
+  // a bridge closer to horizontal is turned a quarter (exactly, keeping every orientation) so
+  // that the sweep has fewer runs to merge and fewer pieces to cut.
   thread_local std::vector<Vec2> ccw;
   thread_local std::vector<std::array<int, 3>> triangles, across;
   ccw.assign(q.rbegin(), q.rend());
+  if (std::abs(along.x) > std::abs(along.y)) {
+    for (Vec2& p : ccw) p = {-p.y, p.x};
+  }
   triangulate(ccw, triangles, &across);
   for (auto& triangle : triangles) {
     for (int& v : triangle) v = m - v;
