@@ -35,17 +35,6 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
   for (auto& triangle : triangles) {
     for (int& v : triangle) v = m - v;
   }
-  auto neighbour = [&](int triangle, int u, int v) {
-    const auto& tri = triangles[static_cast<std::size_t>(triangle)];
-    for (int e = 0; e < 3; ++e) {
-      const int x = tri[static_cast<std::size_t>(e)],
-                y = tri[static_cast<std::size_t>((e + 1) % 3)];
-      if ((x == u && y == v) || (x == v && y == u)) {
-        return across[static_cast<std::size_t>(triangle)][static_cast<std::size_t>(e)];
-      }
-    }
-    return -1;
-  };
   int root = -1;
   for (std::size_t i = 0; i < triangles.size() && root < 0; ++i) {
     const auto& tri = triangles[i];
@@ -100,10 +89,15 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
       slot = step.value;
     }
     const auto& tri = triangles[static_cast<std::size_t>(step.triangle)];
-    int w = -1;
-    for (int v : tri) {
-      if (v != step.a && v != step.b) w = v;
-    }
+    // w is the corner off the entry edge; the triangles across its two other edges come next.
+    const int corner = tri[0] != step.a && tri[0] != step.b   ? 0
+                       : tri[1] != step.a && tri[1] != step.b ? 1
+                                                              : 2;
+    const int w = tri[static_cast<std::size_t>(corner)];
+    const auto& beyond = across[static_cast<std::size_t>(step.triangle)];
+    const int after_w = beyond[static_cast<std::size_t>(corner)];  // across (w, next corner)
+    const int before_w = beyond[static_cast<std::size_t>(corner == 0 ? 2 : corner - 1)];
+    const bool b_follows_w = tri[static_cast<std::size_t>(corner == 2 ? 0 : corner + 1)] == step.b;
     const Vec2 pw = point(w);
     const int apex = step.apex;
     // Where w's path leaves the funnel: the first left-chain vertex whose outgoing edge w is
@@ -142,8 +136,8 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
       distance[static_cast<std::size_t>(w)] =
           distance[static_cast<std::size_t>(predecessor)] + std::hypot(d.x, d.y);
     }
-    const int right_triangle = neighbour(step.triangle, w, step.b);
-    const int left_triangle = neighbour(step.triangle, step.a, w);
+    const int right_triangle = b_follows_w ? after_w : before_w;  // across (w, b)
+    const int left_triangle = b_follows_w ? before_w : after_w;   // across (a, w)
     // Right: w, then the funnel from wrap on. Left: the funnel up to wrap, then w.
     if (right_triangle >= 0) {
       stack.push_back(
