@@ -1204,6 +1204,29 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   return std::nullopt;
 }
 
+// first_accepted_by_score where the best scored candidate is usually taken (the hole searches):
+// one pass finds it without ordering the rest; if it is refused, the full search runs.
+template <typename Exact, typename Accept>
+std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& provisional,
+                                                  Exact&& exact, Accept&& accept) {
+  if (provisional.empty()) return std::nullopt;
+  const ScoredVertex* top = &provisional[0];
+  for (const ScoredVertex& candidate : provisional) {
+    if (scores_before(candidate, *top)) top = &candidate;
+  }
+  ScoredVertex best{exact(top->index), top->index};
+  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower.
+  for (const ScoredVertex& candidate : provisional) {
+    if (&candidate == top || best.score > candidate.score + std::abs(candidate.score) * 1e-9) {
+      continue;
+    }
+    const ScoredVertex scored{exact(candidate.index), candidate.index};
+    if (scores_before(scored, best)) best = scored;
+  }
+  if (accept(best.index)) return best.index;
+  return first_accepted_by_score(provisional, exact, accept);
+}
+
 // Algorithm 4.2 for a hole: join p to the closest visible vertex of ∂P0, and its antipode to the
 // best vertex of ∂P0 by Eq. 8, so the hole opens into two simple pieces.
 std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, const Evaluation& e,
@@ -1214,17 +1237,24 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const int hole_ring = static_cast<int>(h + 1);
+  // The searches from p and from q ask the same sight lines when an attempt's q is a later p,
+  // and a refused search asks all of them: each is computed once.
+  std::vector<std::vector<signed char>> sees_known(hole.size());
+  auto sees = [&](std::size_t p, std::size_t i) {
+    std::vector<signed char>& known = sees_known[p];
+    if (known.empty()) known.assign(outer.size(), -1);
+    if (known[i] < 0) known[i] = view.is_diagonal({hole_ring, p}, {0, i}) ? 1 : 0;
+    return known[i] == 1;
+  };
   auto closest_visible = [&](std::size_t p, std::size_t skip) -> std::size_t {
     // Nearest first: the scores are negated distances.
     std::vector<ScoredVertex> candidates(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
       candidates[i] = {-provisional_distance(outer[i], hole[p]), i};
     }
-    const auto chosen = first_accepted_by_score(
+    const auto chosen = best_accepted_by_score(
         candidates, [&](std::size_t i) { return -distance(outer[i], hole[p]); },
-        [&](std::size_t i) {
-          return i != skip && view.is_diagonal({hole_ring, p}, {0, i});
-        });
+        [&](std::size_t i) { return i != skip && sees(p, i); });
     return chosen ? *chosen : kNone;
   };
   auto best_second = [&](std::size_t p, std::size_t x, std::size_t q) -> std::size_t {
@@ -1236,11 +1266,10 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     for (std::size_t i = 0; i < outer.size(); ++i) {
       if (i != x) candidates.push_back({eq8(i, provisional_distance(outer[i], hole[q])), i});
     }
-    const auto chosen = first_accepted_by_score(
+    const auto chosen = best_accepted_by_score(
         candidates, [&](std::size_t i) { return eq8(i, distance(outer[i], hole[q])); },
         [&](std::size_t i) {
-          return view.is_diagonal({hole_ring, q}, {0, i}) &&
-                 !segments_intersect(hole[p], outer[x], hole[q], outer[i]);
+          return sees(q, i) && !segments_intersect(hole[p], outer[x], hole[q], outer[i]);
         });
     return chosen ? *chosen : kNone;
   };
