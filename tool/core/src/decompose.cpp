@@ -616,7 +616,7 @@ class RegionView {
     if (last_blocker_.ring >= 0 && blocks(sight, last_blocker_.ring, last_blocker_.index)) {
       return false;
     }
-    if (!edge_boxes_.empty()) return is_clear_by_index(sight);
+    if (expects_many_tests_) return is_clear_by_index(sight);
     for (int r = 0; r < ring_count(); ++r) {
       for (std::size_t i = 0; i < ring(r).size(); ++i) {
         if (blocks(sight, r, i)) {
@@ -629,20 +629,8 @@ class RegionView {
   }
 
   // For views that test many diagonals from a few vertices: caches blockers by direction, and
-  // scans the edges' boxes until scans are frequent enough to pay for a grid.
-  void expect_many_tests() {
-    std::size_t count = 0;
-    for (int r = 0; r < ring_count(); ++r) count += ring(r).size();
-    edge_boxes_.reserve(count);
-    for (int r = 0; r < ring_count(); ++r) {
-      const Ring& points = ring(r);
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        const Vec2 c = points[i], d = points[next_index(i, points.size())];
-        edge_boxes_.push_back(
-            {std::min(c.x, d.x), std::max(c.x, d.x), std::min(c.y, d.y), std::max(c.y, d.y)});
-      }
-    }
-  }
+  // scans the edges until scans are frequent enough to pay for a grid.
+  void expect_many_tests() { expects_many_tests_ = true; }
 
  private:
   // Buckets every edge in a uniform grid.
@@ -746,18 +734,20 @@ class RegionView {
     }
     if (edge_start_.empty() && ++scans_ > kScansBeforeGrid) index_edges();
     if (edge_start_.empty()) {
-      const EdgeBox* box = edge_boxes_.data();
+      // Each edge's end is the next edge's start: one point loaded per edge.
       for (int r = 0; r < ring_count(); ++r) {
-        for (std::size_t i = 0; i < ring(r).size(); ++i, ++box) {
-          if (box->max_x < min_x || box->min_x > max_x || box->max_y < min_y ||
-              box->min_y > max_y) {
-            continue;
-          }
-          if (blocks(sight, r, i)) {
-            last_blocker_ = {r, static_cast<std::uint32_t>(i)};
-            remember_blocker(a, last_blocker_);
-            return false;
-          }
+        const Ring& points = ring(r);
+        const std::size_t n = points.size();
+        Vec2 c = points[n - 1];
+        for (std::size_t j = 0, i = n - 1; j < n; i = j++) {
+          const Vec2 d = points[j];
+          const bool apart = (c.x < min_x && d.x < min_x) || (c.x > max_x && d.x > max_x) ||
+                             (c.y < min_y && d.y < min_y) || (c.y > max_y && d.y > max_y);
+          c = d;
+          if (apart || !blocks(sight, r, i)) continue;
+          last_blocker_ = {r, static_cast<std::uint32_t>(i)};
+          remember_blocker(a, last_blocker_);
+          return false;
         }
       }
       return true;
@@ -834,10 +824,7 @@ class RegionView {
   double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0, scale_x_ = 0.0, scale_y_ = 0.0;
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
-  struct EdgeBox {
-    double min_x, max_x, min_y, max_y;
-  };
-  std::vector<EdgeBox> edge_boxes_;  // per edge in ring order (empty: not expecting many tests)
+  bool expects_many_tests_ = false;
   static constexpr int kScansBeforeGrid = 4;
   int scans_ = 0;
   mutable EdgeRef last_blocker_{-1, 0};
