@@ -389,9 +389,8 @@ class VertexGrid {
     rows_ = static_cast<int>(std::clamp(height / cell_size_, 0.0, 1023.0)) + 1;
     scale_ = 1.0 / cell_size_;
     cell_start_.assign(static_cast<std::size_t>(columns_ * rows_ + 1), 0);
-    // Each vertex's cell, computed once for the count and the fill.
-    std::vector<int> cell_of_vertex(count);
-    int* cell = cell_of_vertex.data();
+    std::vector<int> cell_of_vertex;
+    cell_of_vertex.reserve(count);
     auto each_ring = [&](auto&& visit) {
       visit(region.outer, 0);
       for (std::size_t h = 0; h < region.holes.size(); ++h) {
@@ -399,20 +398,20 @@ class VertexGrid {
       }
     };
     each_ring([&](const Ring& ring, int) {
-      for (const Vec2 p : ring) {
-        *cell = row_of(p.y) * columns_ + column_of(p.x);
-        ++cell_start_[static_cast<std::size_t>(*cell++) + 1];
+      for (Vec2 p : ring) {
+        const int cell = row_of(p.y) * columns_ + column_of(p.x);
+        cell_of_vertex.push_back(cell);
+        ++cell_start_[static_cast<std::size_t>(cell) + 1];
       }
     });
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
     entries_.resize(count);
     std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
-    cell = cell_of_vertex.data();
+    std::size_t next = 0;
     each_ring([&](const Ring& ring, int ring_id) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
-        const int slot = fill[static_cast<std::size_t>(*cell++)]++;
-        entries_[static_cast<std::size_t>(slot)] = {ring[i], ring_id,
-                                                    static_cast<std::uint32_t>(i)};
+        const int slot = fill[static_cast<std::size_t>(cell_of_vertex[next++])]++;
+        entries_[static_cast<std::size_t>(slot)] = {ring[i], ring_id, i};
       }
     });
   }
@@ -462,10 +461,10 @@ class VertexGrid {
   }
 
  private:
-  struct Entry {  // 24 bytes: a ring holds fewer than 2^32 vertices
+  struct Entry {
     Vec2 point;
     int ring;
-    std::uint32_t index;
+    std::size_t index;
   };
   int column_of(double x) const {
     return static_cast<int>(std::clamp((x - min_x_) * scale_, 0.0, columns_ - 1.0));
