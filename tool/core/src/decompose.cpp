@@ -370,7 +370,9 @@ NearVertex nearest_by_scan(const Region& region, Vec2 point, int skip_ring) {
 // (each hole's two ends against all the other rings).
 class VertexGrid {
  public:
-  explicit VertexGrid(const Region& region) {
+  // Out of line: whether GCC inlines it into evaluate() flips with unrelated edits of this file,
+  // and inlined it ran more instructions.
+  [[gnu::noinline]] explicit VertexGrid(const Region& region) {
     std::size_t count = region.outer.size();
     for (const Ring& hole : region.holes) count += hole.size();
     // The holes lie inside the outer ring, so its box holds every vertex.
