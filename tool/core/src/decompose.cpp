@@ -727,11 +727,28 @@ class RegionView {
     if (sight_origin_.ring != sight.u.ring || sight_origin_.index != sight.u.index) {
       for (std::vector<EdgeRef>& sector : blockers_by_sector_) sector.clear();
       sight_origin_ = sight.u;
+      misses_from_origin_ = 0;
     }
-    for (const EdgeRef edge : blockers_by_sector_[sector_of(b - a)]) {
+    const std::size_t sector = sector_of(b - a);
+    for (const EdgeRef edge : blockers_by_sector_[sector]) {
       if (blocks(sight, edge.ring, edge.index)) {
         last_blocker_ = edge;
         return false;
+      }
+    }
+    // The edges that blocked the sight lines of earlier origins (often the neighbours on the
+    // same hole) likely block these too: they are filed as seen from this origin before its
+    // second search for a blocker (the first is often the clear sight line of a search that
+    // succeeds at once).
+    if (++misses_from_origin_ == 2) {
+      const std::size_t filed = blockers_by_sector_[sector].size();
+      for (const EdgeRef edge : blockers_found_) file_blocker(a, edge);
+      const std::vector<EdgeRef>& in_sector = blockers_by_sector_[sector];
+      for (std::size_t k = filed; k < in_sector.size(); ++k) {
+        if (blocks(sight, in_sector[k].ring, in_sector[k].index)) {
+          last_blocker_ = in_sector[k];
+          return false;
+        }
       }
     }
     if (edge_start_.empty() && ++scans_ > kScansBeforeGrid) index_edges();
@@ -805,6 +822,10 @@ class RegionView {
   // segment from origin crossing the edge points between them (the edge spans less than a half
   // turn, so the shorter way round).
   void remember_blocker(Vec2 origin, EdgeRef edge) const {
+    if (blockers_found_.size() < kBlockersKept) blockers_found_.push_back(edge);
+    file_blocker(origin, edge);
+  }
+  void file_blocker(Vec2 origin, EdgeRef edge) const {
     const Ring& points = ring(edge.ring);
     const Vec2 c = points[edge.index] - origin;
     const Vec2 d = points[edge.index + 1 == points.size() ? 0 : edge.index + 1] - origin;
@@ -834,6 +855,9 @@ class RegionView {
   mutable Cone cone_of_u_{};
   mutable VertexRef sight_origin_{-1, 0};  // where the sight lines of blockers_by_sector_ start
   mutable std::array<std::vector<EdgeRef>, kSectors> blockers_by_sector_;
+  static constexpr std::size_t kBlockersKept = 256;
+  mutable int misses_from_origin_ = 0;           // of blockers_by_sector_, from sight_origin_
+  mutable std::vector<EdgeRef> blockers_found_;  // for every origin, the first kBlockersKept
 };
 
 // RegionView::is_diagonal for a region without holes, in one tight pass over the ring: a notch is
