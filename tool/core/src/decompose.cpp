@@ -857,7 +857,7 @@ class RegionView {
   mutable std::array<std::vector<EdgeRef>, kSectors> blockers_by_sector_;
   static constexpr std::size_t kBlockersKept = 256;
   mutable int misses_from_origin_ = 0;           // of blockers_by_sector_, from sight_origin_
-  mutable std::vector<EdgeRef> blockers_found_;  // for every origin, the first kBlockersKept
+  mutable std::vector<EdgeRef> blockers_found_;  // first kBlockersKept found, from any origin
 };
 
 // RegionView::is_diagonal for a region without holes, in one tight pass over the ring: a notch is
