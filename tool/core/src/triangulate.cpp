@@ -598,8 +598,15 @@ bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
          (!neighbours || link_neighbours(n, triangles, *neighbours, scratch));
 }
 
+constexpr std::size_t kEarClippingBelow = 24;
+
 void triangulate(const std::vector<Vec2>& polygon, std::vector<std::array<int, 3>>& triangles,
                  std::vector<std::array<int, 3>>* neighbours) {
+  // Small polygons (most pockets) clip faster than the sweep sorts and builds its status.
+  if (polygon.size() < kEarClippingBelow) {
+    triangulate_by_ear_clipping(polygon, triangles, neighbours);
+    return;
+  }
   if (!triangulate_by_sweep(polygon, triangles, neighbours)) {
     triangulate_by_ear_clipping(polygon, triangles, neighbours);
   }
