@@ -113,8 +113,11 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     thread_local std::vector<std::size_t> candidates;
     thread_local Ring points;
     candidates.clear();
+    // A parent hull vertex the child keeps is a vertex of its hull: Melkman's scan starts there.
+    std::size_t start = kNone;
     for (std::size_t k = 0; k < n; ++k) {
       const signed char code = (*hint)[k];
+      if (code == kParentHullVertex && start == kNone) start = candidates.size();
       if (code == kFresh || code == kParentHullVertex) candidates.push_back(k);
       if (code == kParentHullPoint || code == kParentHullVertex) {
         // The range's end points stay even when collinear: the reduced ring keeps its shape.
@@ -130,10 +133,13 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     if (candidates.size() * 4 < n * 3) {
       points.clear();
       for (std::size_t k : candidates) points.push_back(ring[k]);
-      hull = simple_polygon_hull_indices(points);
+      hull = start == kNone ? simple_polygon_hull_indices(points)
+                            : simple_polygon_hull_indices(points, start);
       for (std::size_t& h : hull) h = candidates[h];
     } else {
-      hull = simple_polygon_hull_indices(ring);  // little to skip: not worth the copy
+      // Little to skip: not worth the copy.
+      hull = start == kNone ? simple_polygon_hull_indices(ring)
+                            : simple_polygon_hull_indices(ring, candidates[start]);
     }
   } else {
     hull = simple_polygon_hull_indices(ring);

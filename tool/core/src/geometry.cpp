@@ -111,13 +111,19 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points) {
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
   const std::size_t n = ring.size();
   if (n < 4) return convex_hull_indices(ring);
-  // Start at the lowest-x (then lowest-y) vertex: a hull vertex, and where the result starts.
+  // Start at the lowest-x (then lowest-y) vertex: a hull vertex.
   std::size_t first = 0;
   for (std::size_t i = 1; i < n; ++i) {
     if (ring[i].x < ring[first].x || (ring[i].x == ring[first].x && ring[i].y < ring[first].y)) {
       first = i;
     }
   }
+  return simple_polygon_hull_indices(ring, first);
+}
+
+std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t first) {
+  const std::size_t n = ring.size();
+  if (n < 4 || first >= n) return convex_hull_indices(ring);
   auto vertex = [&](std::size_t k) { return first + k < n ? first + k : first + k - n; };
   auto point = [&](std::size_t index) { return ring[index]; };
   const int start_turn =
@@ -138,15 +144,22 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
   Vec2 top_from = point(deque[top - 1]), top_to = point(deque[top]);
   for (std::size_t k = 3, index = vertex(3); k < n; ++k, index = index + 1 == n ? 0 : index + 1) {
     const Vec2 p = ring[index];
-    if (detail::fast_orientation(bottom_from, bottom_to, p) > 0 &&
-        detail::fast_orientation(top_from, top_to, p) > 0) {
-      continue;
-    }
-    while (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0) {
+    // The tests against the edges at the last added vertex are also the first tests of the pops
+    // below (the bottom's pops never reach the top's edge: p cannot see every hull edge).
+    const bool left_of_bottom = detail::fast_orientation(bottom_from, bottom_to, p) > 0;
+    const bool left_of_top = detail::fast_orientation(top_from, top_to, p) > 0;
+    if (left_of_bottom && left_of_top) continue;
+    if (!left_of_bottom) {
       ++bottom;
+      while (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0) {
+        ++bottom;
+      }
     }
     deque[--bottom] = index;
-    while (detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) <= 0) --top;
+    if (!left_of_top) {
+      --top;
+      while (detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) <= 0) --top;
+    }
     deque[++top] = index;
     bottom_from = p, bottom_to = point(deque[bottom + 1]);
     top_from = point(deque[top - 1]), top_to = p;

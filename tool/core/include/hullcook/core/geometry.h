@@ -26,6 +26,9 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points);
 // vertices (either orientation), in linear time (Melkman's algorithm). Falls back to
 // convex_hull_indices when its first vertices are degenerate.
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring);
+// The same, for a caller that knows a vertex of the hull (an extreme point): the scan starts there
+// instead of searching for one.
+std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex);
 
 enum class Location { outside, boundary, inside };
 
