@@ -939,10 +939,11 @@ bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
   return first.size() <= second.size() ? inside(first) : !inside(second);
 }
 
-// The hint (see HullHint) of a child of size vertices whose vertex k is the parent's vertex
-// (source_first + k) % parent_on_hull.size().
+// The hint (see HullHint) of a child of size vertices whose vertex k < from_parent is the parent's
+// vertex (source_first + k) % parent_on_hull.size(); the rest (a hole's chain) lie inside the
+// parent, so off its hull and outside its pockets.
 HullHint child_hint(const std::vector<char>& parent_on_hull, std::size_t source_first,
-                    std::size_t size) {
+                    std::size_t size, std::size_t from_parent) {
   HullHint hint;
   const std::size_t n = parent_on_hull.size();
   if (n == 0) return hint;
@@ -951,9 +952,9 @@ HullHint child_hint(const std::vector<char>& parent_on_hull, std::size_t source_
     return source_first + k < n ? source_first + k : source_first + k - n;
   };
   std::size_t known_first = 0;
-  while (known_first < size && !parent_on_hull[source(known_first)]) ++known_first;
-  if (known_first == size) return hint;
-  std::size_t known_last = size - 1;
+  while (known_first < from_parent && !parent_on_hull[source(known_first)]) ++known_first;
+  if (known_first == from_parent) return hint;
+  std::size_t known_last = from_parent - 1;
   while (!parent_on_hull[source(known_last)]) --known_last;
   // The child's ends (from its last parent hull point round to its first) are fresh, unless both
   // cut ends lie in one parent pocket: then that pocket's bridge is still a hull edge of the child
@@ -985,9 +986,9 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   const Ring& ring = region.outer;
   Region first, second;
   const std::size_t first_source = cut_chain(ring, i, j, first.outer);
-  hints.first = child_hint(on_hull, first_source, first.outer.size());
+  hints.first = child_hint(on_hull, first_source, first.outer.size(), first.outer.size());
   const std::size_t second_source = cut_chain(ring, j, i, second.outer);
-  hints.second = child_hint(on_hull, second_source, second.outer.size());
+  hints.second = child_hint(on_hull, second_source, second.outer.size(), second.outer.size());
   for (const Ring& hole : region.holes) {
     (in_first_piece(first.outer, second.outer, hole[0]) ? first : second).holes.push_back(hole);
   }
@@ -1040,9 +1041,29 @@ void close_without_degeneracies(Ring& out) {
   if (out.size() == 2 && out[0] == out[1]) out.pop_back();
 }
 
-// Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole.
+// The hint of a piece cut by split_hole: its ring starts with the outer chain from `from` to `to`,
+// less the vertices the seams removed, then runs along the hole.
+HullHint hole_piece_hint(const Ring& outer, const std::vector<char>& on_hull, std::size_t from,
+                         std::size_t to, const Ring& piece) {
+  const std::size_t n = outer.size();
+  if (piece.empty() || on_hull.size() != n) return HullHint();
+  std::size_t first = from, chain = (to + n - from) % n + 1;
+  while (chain > 0 && outer[first] != piece[0]) first = next_index(first, n), --chain;
+  std::size_t from_parent = 0;
+  while (from_parent < chain && from_parent < piece.size() &&
+         piece[from_parent] == outer[(first + from_parent) % n]) {
+    ++from_parent;
+  }
+  if (from_parent == 0) return HullHint();
+  return child_hint(on_hull, first, piece.size(), from_parent);
+}
+
+// Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole. Fills
+// the pieces' hull hints from the parent's hull points.
 std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::size_t p,
-                                     std::size_t x, std::size_t q, std::size_t y) {
+                                     std::size_t x, std::size_t q, std::size_t y,
+                                     const std::vector<char>& on_hull,
+                                     std::pair<HullHint, HullHint>& hints) {
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const std::size_t n = outer.size(), m = hole.size();
@@ -1051,10 +1072,12 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   append_without_degeneracies(outer, x, y, first.outer);
   append_without_degeneracies(hole, q, p, first.outer);
   close_without_degeneracies(first.outer);
+  hints.first = hole_piece_hint(outer, on_hull, x, y, first.outer);
   second.outer.reserve((x + n - y) % n + (q + m - p) % m + 2);
   append_without_degeneracies(outer, y, x, second.outer);
   append_without_degeneracies(hole, p, q, second.outer);
   close_without_degeneracies(second.outer);
+  hints.second = hole_piece_hint(outer, on_hull, y, x, second.outer);
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];
@@ -1250,7 +1273,8 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& pro
 // best vertex of ∂P0 by Eq. 8, so the hole opens into two simple pieces.
 std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, const Evaluation& e,
                                                       std::size_t h,
-                                                      const DecomposeSettings& settings) {
+                                                      const DecomposeSettings& settings,
+                                                      std::pair<HullHint, HullHint>& hints) {
   RegionView view(region);
   view.expect_many_tests();
   const Ring& outer = region.outer;
@@ -1311,7 +1335,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     if (x == kNone) continue;
     const std::size_t y = best_second(p, x, q);
     if (y == kNone) continue;
-    return split_hole(region, h, p, x, q, y);
+    return split_hole(region, h, p, x, q, y, e.outer.on_hull, hints);
   }
   return std::nullopt;
 }
@@ -1362,9 +1386,9 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
       for (std::size_t guard = 0; guard < e.holes.size() && e.holes[h].closest_ring != 0; ++guard) {
         h = std::size_t(e.holes[h].closest_ring - 1);
       }
-      parts = resolve_hole(component, e, h, settings);
+      parts = resolve_hole(component, e, h, settings, child_hints);
       for (std::size_t o = 0; !parts && o < component.holes.size(); ++o) {
-        if (o != h) parts = resolve_hole(component, e, o, settings), h = o;
+        if (o != h) parts = resolve_hole(component, e, o, settings, child_hints), h = o;
       }
       witness = {component.holes[h][e.holes[h].joined], static_cast<int>(h)};
     } else if (e.outer.witness != kNone) {
