@@ -248,12 +248,14 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     const Vec2 along = bt - bs;
     double sl_max = 0.0;
     for_each_between(s, t, n, [&](std::size_t i) { sl_max = std::max(sl_max, result.vertex[i]); });
-    // Observation 5.5: an edge whose outward normal opposes the bridge's.
-    const bool hazard = measure != Measure::sl && any_from(s, t, n, [&](std::size_t i) {
-                          const Vec2 e = ring[next_index(i, n)] - ring[i];
-                          return e.x * along.x + e.y * along.y < 0.0;
-                        });
-    const bool use_sp = measure == Measure::sp || (measure != Measure::sl && hazard);
+    // The hybrids take shortest paths where Observation 5.5 finds a hazard: an edge whose outward
+    // normal opposes the bridge's.
+    const bool is_hybrid = measure == Measure::h1 || measure == Measure::h2;
+    const bool use_sp =
+        measure == Measure::sp || (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
+                                     const Vec2 e = ring[next_index(i, n)] - ring[i];
+                                     return e.x * along.x + e.y * along.y < 0.0;
+                                   }));
     double pocket_value = sl_max;
     if (use_sp) {
       const PocketKey key{bs.x, bs.y, bt.x, bt.y, (t + n - s) % n};
