@@ -1219,11 +1219,20 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   };
   resolving.resize(n);
   std::size_t resolving_count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 x = ring[i];
-    if (is_candidate(i) && resolves(x)) {
-      resolving[resolving_count++] = {eq8(i, provisional_distance(pr, x)), i};
+  auto collect_resolving = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      const Vec2 x = ring[i];
+      if (resolves(x)) resolving[resolving_count++] = {eq8(i, provisional_distance(pr, x)), i};
     }
+  };
+  // Every vertex but r and its neighbours, in index order, without testing each index.
+  if (r == 0) {
+    collect_resolving(2, n - 1);
+  } else if (r == n - 1) {
+    collect_resolving(1, n - 2);
+  } else {
+    collect_resolving(0, r - 1);
+    collect_resolving(r + 2, n);
   }
   resolving.resize(resolving_count);
   auto is_valid = [&](std::size_t i) {
