@@ -113,11 +113,12 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     thread_local std::vector<std::size_t> candidates;
     thread_local Ring points;
     candidates.clear();
-    // A parent hull vertex the child keeps is a vertex of its hull: Melkman's scan starts there.
-    std::size_t start = kNone;
+    // A parent hull vertex the child keeps is a vertex of its hull: Melkman's scan starts there
+    // (kNone: none kept, the scan searches for one).
+    std::size_t start = kNone, start_vertex = kNone;  // in candidates, in ring
     for (std::size_t k = 0; k < n; ++k) {
       const signed char code = (*hint)[k];
-      if (code == kParentHullVertex && start == kNone) start = candidates.size();
+      if (code == kParentHullVertex && start == kNone) start = candidates.size(), start_vertex = k;
       if (code == kFresh || code == kParentHullVertex) candidates.push_back(k);
       if (code == kParentHullPoint || code == kParentHullVertex) {
         // The range's end points stay even when collinear: the reduced ring keeps its shape.
@@ -133,13 +134,10 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     if (candidates.size() * 4 < n * 3) {
       points.clear();
       for (std::size_t k : candidates) points.push_back(ring[k]);
-      hull = start == kNone ? simple_polygon_hull_indices(points)
-                            : simple_polygon_hull_indices(points, start);
+      hull = simple_polygon_hull_indices(points, start);
       for (std::size_t& h : hull) h = candidates[h];
     } else {
-      // Little to skip: not worth the copy.
-      hull = start == kNone ? simple_polygon_hull_indices(ring)
-                            : simple_polygon_hull_indices(ring, candidates[start]);
+      hull = simple_polygon_hull_indices(ring, start_vertex);  // little to skip: not worth the copy
     }
   } else {
     hull = simple_polygon_hull_indices(ring);

@@ -109,21 +109,21 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points) {
 }
 
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
-  const std::size_t n = ring.size();
-  if (n < 4) return convex_hull_indices(ring);
-  // Start at the lowest-x (then lowest-y) vertex: a hull vertex.
-  std::size_t first = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (ring[i].x < ring[first].x || (ring[i].x == ring[first].x && ring[i].y < ring[first].y)) {
-      first = i;
-    }
-  }
-  return simple_polygon_hull_indices(ring, first);
+  return simple_polygon_hull_indices(ring, ring.size());
 }
 
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t first) {
   const std::size_t n = ring.size();
-  if (n < 4 || first >= n) return convex_hull_indices(ring);
+  if (n < 4) return convex_hull_indices(ring);
+  if (first >= n) {
+    // Start at the lowest-x (then lowest-y) vertex: a hull vertex.
+    first = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (ring[i].x < ring[first].x || (ring[i].x == ring[first].x && ring[i].y < ring[first].y)) {
+        first = i;
+      }
+    }
+  }
   auto vertex = [&](std::size_t k) { return first + k < n ? first + k : first + k - n; };
   auto point = [&](std::size_t index) { return ring[index]; };
   const int start_turn =

@@ -27,7 +27,7 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points);
 // convex_hull_indices when its first vertices are degenerate.
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring);
 // The same, for a caller that knows a vertex of the hull (an extreme point): the scan starts there
-// instead of searching for one.
+// instead of searching for one. A hull_vertex out of range (>= ring.size()) is searched for.
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex);
 
 enum class Location { outside, boundary, inside };
