@@ -759,20 +759,29 @@ class RegionView {
     }
     if (edge_start_.empty() && ++scans_ > kScansBeforeGrid) index_edges();
     if (edge_start_.empty()) {
-      // Each edge's end is the next edge's start: one point loaded per edge.
+      if (chunk_boxes_.empty()) box_chunks();
+      const ChunkBox* box = chunk_boxes_.data();
       for (int r = 0; r < ring_count(); ++r) {
         const Ring& points = ring(r);
         const std::size_t n = points.size();
-        Vec2 c = points[n - 1];
-        for (std::size_t j = 0, i = n - 1; j < n; i = j++) {
-          const Vec2 d = points[j];
-          const bool apart = (c.x < min_x && d.x < min_x) || (c.x > max_x && d.x > max_x) ||
-                             (c.y < min_y && d.y < min_y) || (c.y > max_y && d.y > max_y);
-          c = d;
-          if (apart || !blocks(sight, r, i)) continue;
-          last_blocker_ = {r, static_cast<std::uint32_t>(i)};
-          remember_blocker(a, last_blocker_);
-          return false;
+        for (std::size_t first = 0; first < n; first += kEdgesPerChunk, ++box) {
+          if (box->max_x < min_x || box->min_x > max_x || box->max_y < min_y ||
+              box->min_y > max_y) {
+            continue;
+          }
+          // Each edge's end is the next edge's start: one point loaded per edge.
+          const std::size_t last = std::min(first + kEdgesPerChunk, n);
+          Vec2 c = points[first];
+          for (std::size_t i = first; i < last; ++i) {
+            const Vec2 d = points[i + 1 == n ? 0 : i + 1];
+            const bool apart = (c.x < min_x && d.x < min_x) || (c.x > max_x && d.x > max_x) ||
+                               (c.y < min_y && d.y < min_y) || (c.y > max_y && d.y > max_y);
+            c = d;
+            if (apart || !blocks(sight, r, i)) continue;
+            last_blocker_ = {r, static_cast<std::uint32_t>(i)};
+            remember_blocker(a, last_blocker_);
+            return false;
+          }
         }
       }
       return true;
@@ -811,6 +820,30 @@ class RegionView {
       }
     }
     return true;
+  }
+
+  // The box of every kEdgesPerChunk consecutive edges of each ring, in ring order: a scan for a
+  // blocker skips the chunks whose box misses the sight line's.
+  static constexpr std::size_t kEdgesPerChunk = 16;
+  struct ChunkBox {
+    double min_x, max_x, min_y, max_y;
+  };
+  void box_chunks() {
+    for (int r = 0; r < ring_count(); ++r) {
+      const Ring& points = ring(r);
+      const std::size_t n = points.size();
+      for (std::size_t first = 0; first < n; first += kEdgesPerChunk) {
+        const std::size_t last = std::min(first + kEdgesPerChunk, n);  // end of the last edge
+        const Vec2 end = points[last == n ? 0 : last];
+        ChunkBox box{end.x, end.x, end.y, end.y};
+        for (std::size_t i = first; i < last; ++i) {
+          const Vec2 point = points[i];
+          box.min_x = std::min(box.min_x, point.x), box.max_x = std::max(box.max_x, point.x);
+          box.min_y = std::min(box.min_y, point.y), box.max_y = std::max(box.max_y, point.y);
+        }
+        chunk_boxes_.push_back(box);
+      }
+    }
   }
 
   // Sectors of directions around a vertex, cut by a pseudo-angle (monotone in the angle, without
@@ -853,6 +886,7 @@ class RegionView {
   double min_x_ = 0.0, max_x_ = 0.0, min_y_ = 0.0, max_y_ = 0.0, scale_x_ = 0.0, scale_y_ = 0.0;
   std::vector<int> edge_start_;  // per cell, its first entry in edges_ (empty: not indexed)
   std::vector<EdgeRef> edges_;
+  std::vector<ChunkBox> chunk_boxes_;  // empty: not boxed yet
   bool expects_many_tests_ = false;
   static constexpr int kScansBeforeGrid = 4;
   int scans_ = 0;
@@ -1298,7 +1332,14 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     if (known[i] < 0) known[i] = view.is_diagonal({hole_ring, p}, {0, i}) ? 1 : 0;
     return known[i] == 1;
   };
+  const HoleConcavity& info = e.holes[h];
   auto closest_visible = [&](std::size_t p, std::size_t skip) -> std::size_t {
+    // Eq. 5 found the vertex nearest to the joined end, by the same distances and tie-break: when
+    // it lies on ∂P0 and p sees it, no other vertex needs a look.
+    if (p == info.joined && info.closest_ring == 0 && info.closest != skip &&
+        sees(p, info.closest)) {
+      return info.closest;
+    }
     // Nearest first: the scores are negated distances.
     std::vector<ScoredVertex> candidates(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
@@ -1325,7 +1366,6 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
         });
     return chosen ? *chosen : kNone;
   };
-  const HoleConcavity& info = e.holes[h];
   std::vector<std::pair<std::size_t, std::size_t>> attempts{{info.joined, info.far_end},
                                                             {info.far_end, info.joined}};
   for (std::size_t i = 0; i < hole.size(); ++i) {
