@@ -18,7 +18,7 @@ void remove_degenerate_vertices_in_place(Ring& ring) {
   std::size_t kept = 0;
   for (std::size_t k = 0; k < ring.size(); ++k) {
     const Vec2 p = ring[k];
-    while (kept >= 2 && detail::fast_orientation(ring[kept - 2], ring[kept - 1], p) == 0) --kept;
+    while (kept >= 2 && detail::fast_orient2d(ring[kept - 2], ring[kept - 1], p) == 0.0) --kept;
     if (kept > 0 && ring[kept - 1] == p) continue;
     ring[kept++] = p;
   }
@@ -31,10 +31,10 @@ void remove_degenerate_vertices_in_place(Ring& ring) {
     if (out.back() == out.front()) {
       out.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
+    } else if (detail::fast_orient2d(out[out.size() - 2], out.back(), out.front()) == 0.0) {
       out.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(out.back(), out[0], out[1]) == 0) {
+    } else if (detail::fast_orient2d(out.back(), out[0], out[1]) == 0.0) {
       out.erase(out.begin());
       changed = true;
     }

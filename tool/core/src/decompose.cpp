@@ -68,17 +68,25 @@ struct OuterConcavity {
 // The ring that replaces every kept pocket by its bridge, without the parent's collinear hull
 // points, is simple (the child plus its kept pockets) and has the child's hull: Melkman's linear
 // hull runs on it.
-enum HullHintCode : signed char {
+// A pocket kept whole is the same chain with the same bridge, so it keeps its concavities. A
+// pocket cut open at the child's ends whose bridge the child keeps (see child_hint) keeps its
+// straight-line ones.
+enum HintCode : signed char {
   kFresh = 0,
   kParentHullPoint = 1,  // exactly on a parent hull edge
   kInsideKeptPocket = 2,
   kParentHullVertex = 3,
+  kInsideCutPocket = 4,   // in the parent pocket cut open at the child's ends, its bridge kept
+  kInsideAddedChain = 5,  // a hole's chain added inside that pocket
 };
-using HullHint = std::vector<signed char>;  // empty: nothing inherited
+struct ParentHint {
+  std::vector<signed char> code;  // per vertex, a HintCode; empty: nothing inherited
+  std::vector<double> value;      // per vertex, the parent's value where inherited; or empty
+};
 
 bool is_notch(const Ring& ring, std::size_t i) {
   const std::size_t n = ring.size();
-  return detail::fast_orientation(ring[prev_index(i, n)], ring[i], ring[next_index(i, n)]) < 0;
+  return detail::fast_orient2d(ring[prev_index(i, n)], ring[i], ring[next_index(i, n)]) < 0.0;
 }
 
 // Shortest paths of pockets already measured in an ancestor. A pocket is its chain from β- to β+;
@@ -100,16 +108,16 @@ struct PocketKeyHash {
 };
 using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
 
-// The hull of a ring, using what a hint inherits (see HullHint). Sets on_hull: 2 for hull vertices,
-// 1 for the parent's points exactly on a hull edge the child keeps; the other points exactly on a
-// hull edge are left to measure_outer.
-std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
+// The hull of a ring, using what a hint inherits (see ParentHint). Sets on_hull: 2 for hull
+// vertices, 1 for the parent's points exactly on a hull edge the child keeps; the other points
+// exactly on a hull edge are left to measure_outer.
+std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint,
                                         std::vector<char>& on_hull) {
   const std::size_t n = ring.size();
   // The inherited range [known_first, known_last], both ends parent hull points.
   std::size_t known_first = n, known_last = 0;
   std::vector<std::size_t> hull;
-  if (hint && hint->size() == n) {
+  if (hint && hint->code.size() == n) {
     thread_local std::vector<std::size_t> candidates;
     thread_local Ring points;
     candidates.clear();
@@ -117,7 +125,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     // (kNone: none kept, the scan searches for one).
     std::size_t start = kNone, start_vertex = kNone;  // in candidates, in ring
     for (std::size_t k = 0; k < n; ++k) {
-      const signed char code = (*hint)[k];
+      const signed char code = hint->code[k];
       if (code == kParentHullVertex && start == kNone) start = candidates.size(), start_vertex = k;
       if (code == kFresh || code == kParentHullVertex) candidates.push_back(k);
       if (code == kParentHullPoint || code == kParentHullVertex) {
@@ -127,7 +135,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
         known_last = k;
       }
     }
-    if (known_last > known_first && (*hint)[known_last] == kParentHullPoint) {
+    if (known_last > known_first && hint->code[known_last] == kParentHullPoint) {
       candidates.push_back(known_last);
       std::sort(candidates.begin(), candidates.end());
     }
@@ -150,7 +158,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const HullHint* hint,
     if (known_first <= s && s < t && t <= known_last) {
       // A parent hull edge (no parent hull vertex between s and t would be missing from the
       // child's hull): its points are the parent's.
-      for (std::size_t i = s + 1; i < t; ++i) on_hull[i] = (*hint)[i] == kParentHullPoint;
+      for (std::size_t i = s + 1; i < t; ++i) on_hull[i] = hint->code[i] == kParentHullPoint;
       continue;
     }
     // Points on a fresh edge are found by measure_outer, which evaluates the same orientations.
@@ -189,7 +197,7 @@ bool any_from(std::size_t s, std::size_t t, std::size_t n, Test&& test) {
 }
 
 OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
-                             PocketCache* cache = nullptr, const HullHint* hint = nullptr) {
+                             PocketCache* cache = nullptr, const ParentHint* hint = nullptr) {
   const std::size_t n = ring.size();
   OuterConcavity result;
   result.vertex.assign(n, 0.0);
@@ -215,12 +223,27 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   // it becomes a hull point (marked kFoundOnEdge for now), splitting the bridge so that every
   // pocket stays simple; the pockets it splits are measured again with their own bridges.
   constexpr char kFoundOnEdge = 3;
-  auto measure_straight_line = [&](std::size_t s, std::size_t t) {
+  const bool inherits = hint && hint->value.size() == n && measure != Measure::h2;
+  // A pocket's code is its first vertex's (see ParentHint).
+  auto pocket_code = [&](std::size_t s) {
+    return inherits ? hint->code[next_index(s, n)] : static_cast<signed char>(kFresh);
+  };
+  auto inherit = [&](std::size_t i) { result.vertex[i] = hint->value[i]; };
+  // The pockets split by a point found on their bridge are measured again without inheriting:
+  // their bridges are shorter, and the distances may round differently.
+  auto measure_straight_line = [&](std::size_t s, std::size_t t, bool may_inherit) {
+    const signed char code = may_inherit ? pocket_code(s) : static_cast<signed char>(kFresh);
+    if (code == kInsideKeptPocket) {
+      for_each_between(s, t, n, inherit);
+      return false;
+    }
+    const bool inherits_cut = measure == Measure::sl && code != kFresh;
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
     const double length = std::hypot(along.x, along.y);
     bool found = false;
     for_each_between(s, t, n, [&](std::size_t i) {
+      if (inherits_cut && hint->code[i] == kInsideCutPocket) return inherit(i);
       const double determinant = detail::fast_orient2d(bs, bt, ring[i]);
       if (determinant == 0.0) on_hull[i] = kFoundOnEdge, found = true;
       result.vertex[i] = std::abs(determinant) / length;
@@ -230,12 +253,14 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   collect_hull_points();
   bool found_on_edge = false;
   for_each_pocket([&](std::size_t s, std::size_t t) {
-    if (measure_straight_line(s, t)) found_on_edge = true;
+    if (measure_straight_line(s, t, true)) found_on_edge = true;
   });
   if (found_on_edge) {
     collect_hull_points();
     for_each_pocket([&](std::size_t s, std::size_t t) {
-      if (on_hull[s] == kFoundOnEdge || on_hull[t] == kFoundOnEdge) measure_straight_line(s, t);
+      if (on_hull[s] == kFoundOnEdge || on_hull[t] == kFoundOnEdge) {
+        measure_straight_line(s, t, false);
+      }
     });
     for (char& mark : on_hull) mark = mark == kFoundOnEdge ? 1 : mark;
   }
@@ -249,11 +274,13 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     // The hybrids take shortest paths where Observation 5.5 finds a hazard: an edge whose outward
     // normal opposes the bridge's.
     const bool is_hybrid = measure == Measure::h1 || measure == Measure::h2;
+    // A pocket kept whole has its values already (inherited above).
     const bool use_sp =
-        measure == Measure::sp || (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
-                                     const Vec2 e = ring[next_index(i, n)] - ring[i];
-                                     return e.x * along.x + e.y * along.y < 0.0;
-                                   }));
+        pocket_code(s) != kInsideKeptPocket &&
+        (measure == Measure::sp || (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
+                                      const Vec2 e = ring[next_index(i, n)] - ring[i];
+                                      return e.x * along.x + e.y * along.y < 0.0;
+                                    })));
     double pocket_value = sl_max;
     if (use_sp) {
       const PocketKey key{bs.x, bs.y, bt.x, bt.y, (t + n - s) % n};
@@ -595,17 +622,17 @@ class RegionView {
   };
   Cone cone(VertexRef v) const {
     const Vec2 a = at(v), before = prev(v), after = next(v);
-    return {a, before, after, detail::fast_orientation(a, after, before) >= 0};
+    return {a, before, after, detail::fast_orient2d(a, after, before) >= 0.0};
   }
   // The open segment from the apex toward target leaves it into the interior (O'Rourke's InCone).
   static bool in_cone(const Cone& cone, Vec2 target) {
     const Vec2 a = cone.apex;
     if (cone.convex) {
-      return detail::fast_orientation(a, target, cone.before) > 0 &&
-             detail::fast_orientation(target, a, cone.after) > 0;
+      return detail::fast_orient2d(a, target, cone.before) > 0.0 &&
+             detail::fast_orient2d(target, a, cone.after) > 0.0;
     }
-    return !(detail::fast_orientation(a, target, cone.after) >= 0 &&
-             detail::fast_orientation(target, a, cone.before) >= 0);
+    return !(detail::fast_orient2d(a, target, cone.after) >= 0.0 &&
+             detail::fast_orient2d(target, a, cone.before) >= 0.0);
   }
   bool in_cone(VertexRef v, Vec2 target) const { return in_cone(cone(v), target); }
 
@@ -941,10 +968,10 @@ std::size_t cut_chain(const Ring& ring, std::size_t first, std::size_t last, Rin
   while (changed && size() >= 3) {
     changed = false;
     const std::size_t m = size();
-    if (at(m - 1) == at(0) || detail::fast_orientation(at(m - 2), at(m - 1), at(0)) == 0) {
+    if (at(m - 1) == at(0) || detail::fast_orient2d(at(m - 2), at(m - 1), at(0)) == 0.0) {
       out.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(at(m - 1), at(0), at(1)) == 0) {
+    } else if (detail::fast_orient2d(at(m - 1), at(0), at(1)) == 0.0) {
       ++front;
       changed = true;
     }
@@ -964,8 +991,8 @@ bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
     for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
       const Vec2 a = ring[j], b = ring[i];
       if ((a.y > p.y) != (b.y > p.y)) {
-        const int side = detail::fast_orientation(a, b, p);
-        if ((b.y > a.y) ? side > 0 : side < 0) odd = !odd;
+        const double side = detail::fast_orient2d(a, b, p);
+        if ((b.y > a.y) ? side > 0.0 : side < 0.0) odd = !odd;
       }
     }
     return odd;
@@ -973,12 +1000,14 @@ bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
   return first.size() <= second.size() ? inside(first) : !inside(second);
 }
 
-// The hint (see HullHint) of a child of size vertices whose vertex k < from_parent is the parent's
-// vertex (source_first + k) % parent_on_hull.size(); the rest (a hole's chain) lie inside the
-// parent, so off its hull and outside its pockets.
-HullHint child_hint(const std::vector<char>& parent_on_hull, std::size_t source_first,
-                    std::size_t size, std::size_t from_parent) {
-  HullHint hint;
+// The hint (see ParentHint) of a child of size vertices whose vertex k < from_parent is the
+// parent's vertex (source_first + k) % parent.on_hull.size(); the rest (a hole's chain) lie inside
+// the parent, so off its hull and outside its pockets. The parent's values are inherited unless
+// with_values is false.
+ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, std::size_t size,
+                      std::size_t from_parent, bool with_values) {
+  ParentHint hint;
+  const std::vector<char>& parent_on_hull = parent.on_hull;
   const std::size_t n = parent_on_hull.size();
   if (n == 0) return hint;
   // The child's vertex k is the parent's vertex source(k).
@@ -992,37 +1021,54 @@ HullHint child_hint(const std::vector<char>& parent_on_hull, std::size_t source_
   while (!parent_on_hull[source(known_last)]) --known_last;
   // The child's ends (from its last parent hull point round to its first) are fresh, unless both
   // cut ends lie in one parent pocket: then that pocket's bridge is still a hull edge of the child
-  // (the child is on the parent's side of it), and the ends lie inside the kept pocket.
-  bool ends_in_kept_pocket = known_first < known_last;
-  if (ends_in_kept_pocket) {
+  // (the child is on the parent's side of it), and the ends lie inside the pocket.
+  bool ends_in_one_pocket = known_first < known_last;
+  if (ends_in_one_pocket) {
     const std::size_t bridge_end = (source_first + known_first) % n;
     for (std::size_t i = next_index((source_first + known_last) % n, n); i != bridge_end;
          i = next_index(i, n)) {
       if (parent_on_hull[i]) {
-        ends_in_kept_pocket = false;
+        ends_in_one_pocket = false;
         break;
       }
     }
   }
-  hint.assign(size, ends_in_kept_pocket ? kInsideKeptPocket : kFresh);
+  std::vector<signed char>& code = hint.code;
+  code.assign(size, ends_in_one_pocket ? kInsideCutPocket : kFresh);
+  if (ends_in_one_pocket)
+    std::fill(code.begin() + std::ptrdiff_t(from_parent), code.end(), kInsideAddedChain);
   constexpr signed char kCodeOfOnHull[3] = {kInsideKeptPocket, kParentHullPoint, kParentHullVertex};
   for (std::size_t k = known_first; k <= known_last; ++k) {
-    hint[k] = kCodeOfOnHull[static_cast<std::size_t>(parent_on_hull[source(k)])];
+    code[k] = kCodeOfOnHull[static_cast<std::size_t>(parent_on_hull[source(k)])];
+  }
+  if (with_values) {
+    // In two runs: the source wraps round the parent's end at most once.
+    hint.value.resize(size);
+    const std::size_t before_wrap = std::min(from_parent, n - source_first);
+    std::copy_n(parent.vertex.begin() + std::ptrdiff_t(source_first), before_wrap,
+                hint.value.begin());
+    std::copy_n(parent.vertex.begin(), from_parent - before_wrap,
+                hint.value.begin() + std::ptrdiff_t(before_wrap));
   }
   return hint;
 }
 
+// H2's values depend on τ where a pocket is deeper than it: its children measure afresh.
+bool inherits_values(const DecomposeSettings& settings) { return settings.measure != Measure::h2; }
+
 // Cuts the outer ring along the diagonal i-j; holes go to the piece containing them. Fills the
 // children's hull hints from the parent's hull points.
 std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::size_t j,
-                                      const std::vector<char>& on_hull,
-                                      std::pair<HullHint, HullHint>& hints) {
+                                      const OuterConcavity& parent, bool with_values,
+                                      std::pair<ParentHint, ParentHint>& hints) {
   const Ring& ring = region.outer;
   Region first, second;
   const std::size_t first_source = cut_chain(ring, i, j, first.outer);
-  hints.first = child_hint(on_hull, first_source, first.outer.size(), first.outer.size());
+  hints.first =
+      child_hint(parent, first_source, first.outer.size(), first.outer.size(), with_values);
   const std::size_t second_source = cut_chain(ring, j, i, second.outer);
-  hints.second = child_hint(on_hull, second_source, second.outer.size(), second.outer.size());
+  hints.second =
+      child_hint(parent, second_source, second.outer.size(), second.outer.size(), with_values);
   for (const Ring& hole : region.holes) {
     (in_first_piece(first.outer, second.outer, hole[0]) ? first : second).holes.push_back(hole);
   }
@@ -1049,7 +1095,7 @@ void append_without_degeneracies(const Ring& ring, std::size_t from, std::size_t
       return;
     }
     const Vec2 p = ring[k];
-    while (out.size() >= 2 && detail::fast_orientation(out[out.size() - 2], out.back(), p) == 0) {
+    while (out.size() >= 2 && detail::fast_orient2d(out[out.size() - 2], out.back(), p) == 0.0) {
       out.pop_back();
     }
     if (out.empty() || out.back() != p) out.push_back(p);
@@ -1064,10 +1110,10 @@ void close_without_degeneracies(Ring& out) {
     if (out.back() == out.front()) {
       out.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(out[out.size() - 2], out.back(), out.front()) == 0) {
+    } else if (detail::fast_orient2d(out[out.size() - 2], out.back(), out.front()) == 0.0) {
       out.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(out.back(), out[0], out[1]) == 0) {
+    } else if (detail::fast_orient2d(out.back(), out[0], out[1]) == 0.0) {
       out.erase(out.begin());
       changed = true;
     }
@@ -1077,10 +1123,10 @@ void close_without_degeneracies(Ring& out) {
 
 // The hint of a piece cut by split_hole: its ring starts with the outer chain from `from` to `to`,
 // less the vertices the seams removed, then runs along the hole.
-HullHint hole_piece_hint(const Ring& outer, const std::vector<char>& on_hull, std::size_t from,
-                         std::size_t to, const Ring& piece) {
+ParentHint hole_piece_hint(const Ring& outer, const OuterConcavity& parent, bool with_values,
+                           std::size_t from, std::size_t to, const Ring& piece) {
   const std::size_t n = outer.size();
-  if (piece.empty() || on_hull.size() != n) return HullHint();
+  if (piece.empty() || parent.on_hull.size() != n) return ParentHint();
   std::size_t first = from, chain = (to + n - from) % n + 1;
   while (chain > 0 && outer[first] != piece[0]) first = next_index(first, n), --chain;
   std::size_t from_parent = 0;
@@ -1088,16 +1134,16 @@ HullHint hole_piece_hint(const Ring& outer, const std::vector<char>& on_hull, st
          piece[from_parent] == outer[(first + from_parent) % n]) {
     ++from_parent;
   }
-  if (from_parent == 0) return HullHint();
-  return child_hint(on_hull, first, piece.size(), from_parent);
+  if (from_parent == 0) return ParentHint();
+  return child_hint(parent, first, piece.size(), from_parent, with_values);
 }
 
 // Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole. Fills
 // the pieces' hull hints from the parent's hull points.
 std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::size_t p,
                                      std::size_t x, std::size_t q, std::size_t y,
-                                     const std::vector<char>& on_hull,
-                                     std::pair<HullHint, HullHint>& hints) {
+                                     const OuterConcavity& parent, bool with_values,
+                                     std::pair<ParentHint, ParentHint>& hints) {
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const std::size_t n = outer.size(), m = hole.size();
@@ -1106,12 +1152,12 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   append_without_degeneracies(outer, x, y, first.outer);
   append_without_degeneracies(hole, q, p, first.outer);
   close_without_degeneracies(first.outer);
-  hints.first = hole_piece_hint(outer, on_hull, x, y, first.outer);
+  hints.first = hole_piece_hint(outer, parent, with_values, x, y, first.outer);
   second.outer.reserve((x + n - y) % n + (q + m - p) % m + 2);
   append_without_degeneracies(outer, y, x, second.outer);
   append_without_degeneracies(hole, p, q, second.outer);
   close_without_degeneracies(second.outer);
-  hints.second = hole_piece_hint(outer, on_hull, y, x, second.outer);
+  hints.second = hole_piece_hint(outer, parent, with_values, y, x, second.outer);
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];
@@ -1128,7 +1174,7 @@ struct Evaluation {
 };
 
 Evaluation evaluate(const Region& region, Measure measure, double tau, PocketCache* cache = nullptr,
-                    const HullHint* hint = nullptr) {
+                    const ParentHint* hint = nullptr) {
   Evaluation e;
   e.outer = measure_outer(region.outer, measure, tau, cache, hint);
   e.value = e.outer.value;
@@ -1227,7 +1273,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
                                                        std::size_t r,
                                                        const DecomposeSettings& settings,
-                                                       std::pair<HullHint, HullHint>& hints) {
+                                                       std::pair<ParentHint, ParentHint>& hints) {
   const Ring& ring = region.outer;
   const std::size_t n = ring.size();
   RegionView view(region);
@@ -1247,7 +1293,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   const std::size_t after_r = next_index(r, n), before_r = prev_index(r, n);
   auto is_candidate = [&](std::size_t i) { return i != r && i != after_r && i != before_r; };
   auto resolves = [&](Vec2 x) {
-    return detail::fast_orientation(a, pr, x) >= 0 && detail::fast_orientation(x, pr, b) >= 0;
+    return detail::fast_orient2d(a, pr, x) >= 0.0 && detail::fast_orient2d(x, pr, b) >= 0.0;
   };
   resolving.resize(n);
   std::size_t resolving_count = 0;
@@ -1273,7 +1319,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   };
   if (const auto chosen = first_accepted_by_score(
           resolving, [&](std::size_t i) { return eq8(i, distance(pr, ring[i])); }, is_valid)) {
-    return split_outer(region, r, *chosen, concavity.on_hull, hints);
+    return split_outer(region, r, *chosen, concavity, inherits_values(settings), hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
   for (std::size_t i = 0; i < n; ++i) {
@@ -1284,7 +1330,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   }
   if (const auto chosen = first_accepted(
           others, scores_before, [&](const ScoredVertex& c) { return is_valid(c.index); })) {
-    return split_outer(region, r, chosen->index, concavity.on_hull, hints);
+    return split_outer(region, r, chosen->index, concavity, inherits_values(settings), hints);
   }
   return std::nullopt;
 }
@@ -1317,7 +1363,7 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& pro
 std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, const Evaluation& e,
                                                       std::size_t h,
                                                       const DecomposeSettings& settings,
-                                                      std::pair<HullHint, HullHint>& hints) {
+                                                      std::pair<ParentHint, ParentHint>& hints) {
   RegionView view(region);
   view.expect_many_tests();
   const Ring& outer = region.outer;
@@ -1384,7 +1430,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     if (x == kNone) continue;
     const std::size_t y = best_second(p, x, q);
     if (y == kNone) continue;
-    return split_hole(region, h, p, x, q, y, e.outer.on_hull, hints);
+    return split_hole(region, h, p, x, q, y, e.outer, inherits_values(settings), hints);
   }
   return std::nullopt;
 }
@@ -1415,7 +1461,7 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
   PocketCache cache;
-  std::vector<HullHint> hints(1);  // per node
+  std::vector<ParentHint> hints(1);  // per node
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
@@ -1423,8 +1469,8 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     const Region& component = tree.nodes_[std::size_t(id)].component;
     const Evaluation e =
         evaluate(component, settings.measure, settings.tau, &cache, &hints[std::size_t(id)]);
-    hints[std::size_t(id)] = HullHint();
-    std::pair<HullHint, HullHint> child_hints;
+    hints[std::size_t(id)] = ParentHint();
+    std::pair<ParentHint, ParentHint> child_hints;
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;
     std::optional<std::pair<Region, Region>> parts;

@@ -91,15 +91,15 @@ std::vector<std::size_t> convex_hull_indices(const Ring& points) {
   std::vector<std::size_t> hull(2 * order.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < order.size(); ++i) {
-    while (k >= 2 && detail::fast_orientation(points[hull[k - 2]], points[hull[k - 1]],
-                                              points[order[i]]) <= 0) {
+    while (k >= 2 && detail::fast_orient2d(points[hull[k - 2]], points[hull[k - 1]],
+                                           points[order[i]]) <= 0.0) {
       --k;
     }
     hull[k++] = order[i];
   }
   for (std::size_t i = order.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && detail::fast_orientation(points[hull[k - 2]], points[hull[k - 1]],
-                                                  points[order[i]]) <= 0) {
+    while (k >= lower && detail::fast_orient2d(points[hull[k - 2]], points[hull[k - 1]],
+                                               points[order[i]]) <= 0.0) {
       --k;
     }
     hull[k++] = order[i];
@@ -146,19 +146,19 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
     const Vec2 p = ring[index];
     // The tests against the edges at the last added vertex are also the first tests of the pops
     // below (the bottom's pops never reach the top's edge: p cannot see every hull edge).
-    const bool left_of_bottom = detail::fast_orientation(bottom_from, bottom_to, p) > 0;
-    const bool left_of_top = detail::fast_orientation(top_from, top_to, p) > 0;
+    const bool left_of_bottom = detail::fast_orient2d(bottom_from, bottom_to, p) > 0.0;
+    const bool left_of_top = detail::fast_orient2d(top_from, top_to, p) > 0.0;
     if (left_of_bottom && left_of_top) continue;
     if (!left_of_bottom) {
       ++bottom;
-      while (detail::fast_orientation(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0) {
+      while (detail::fast_orient2d(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0.0) {
         ++bottom;
       }
     }
     deque[--bottom] = index;
     if (!left_of_top) {
       --top;
-      while (detail::fast_orientation(point(deque[top - 1]), point(deque[top]), p) <= 0) --top;
+      while (detail::fast_orient2d(point(deque[top - 1]), point(deque[top]), p) <= 0.0) --top;
     }
     deque[++top] = index;
     bottom_from = p, bottom_to = point(deque[bottom + 1]);
@@ -170,8 +170,8 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   hull.reserve(top - bottom);
   for (std::size_t k = bottom; k < top; ++k) {
     const std::size_t index = deque[k];
-    while (hull.size() >= 2 && detail::fast_orientation(point(hull[hull.size() - 2]),
-                                                        point(hull.back()), point(index)) <= 0) {
+    while (hull.size() >= 2 && detail::fast_orient2d(point(hull[hull.size() - 2]),
+                                                     point(hull.back()), point(index)) <= 0.0) {
       hull.pop_back();
     }
     hull.push_back(index);
@@ -180,10 +180,10 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   while (changed && hull.size() >= 3) {
     changed = false;
     const std::size_t h = hull.size();
-    if (detail::fast_orientation(point(hull[h - 2]), point(hull[h - 1]), point(hull[0])) <= 0) {
+    if (detail::fast_orient2d(point(hull[h - 2]), point(hull[h - 1]), point(hull[0])) <= 0.0) {
       hull.pop_back();
       changed = true;
-    } else if (detail::fast_orientation(point(hull[h - 1]), point(hull[0]), point(hull[1])) <= 0) {
+    } else if (detail::fast_orient2d(point(hull[h - 1]), point(hull[0]), point(hull[1])) <= 0.0) {
       hull.erase(hull.begin());
       changed = true;
     }
@@ -211,8 +211,8 @@ Location locate_point(const Ring& ring, Vec2 p) {
     if (on_segment(a, b, p)) return Location::boundary;
     // Half-open rule on y; the side test is exact.
     if ((a.y > p.y) != (b.y > p.y)) {
-      const int side = detail::fast_orientation(a, b, p);
-      if ((b.y > a.y) ? side > 0 : side < 0) inside = !inside;
+      const double side = detail::fast_orient2d(a, b, p);
+      if ((b.y > a.y) ? side > 0.0 : side < 0.0) inside = !inside;
     }
   }
   return inside ? Location::inside : Location::outside;

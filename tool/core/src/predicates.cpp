@@ -73,28 +73,30 @@ int orientation(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
-  if (detail::fast_orientation(a, b, p) != 0) return false;
+  if (detail::fast_orient2d(a, b, p) != 0.0) return false;
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
          p.y <= std::max(a.y, b.y);
 }
 
 bool segments_intersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int o1 = detail::fast_orientation(a, b, c);
-  const int o2 = detail::fast_orientation(a, b, d);
+  // The orientations' values have exact signs; their products could underflow.
+  auto same_side = [](double u, double v) { return (u > 0.0 && v > 0.0) || (u < 0.0 && v < 0.0); };
+  const double o1 = detail::fast_orient2d(a, b, c);
+  const double o2 = detail::fast_orient2d(a, b, d);
   // c and d strictly on one side of ab's line: no common point (the usual answer, decided early).
-  if (o1 * o2 > 0) return false;
-  const int o3 = detail::fast_orientation(c, d, a);
-  const int o4 = detail::fast_orientation(c, d, b);
-  if (o3 * o4 > 0) return false;
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  if (same_side(o1, o2)) return false;
+  const double o3 = detail::fast_orient2d(c, d, a);
+  const double o4 = detail::fast_orient2d(c, d, b);
+  if (same_side(o3, o4)) return false;
+  if (o1 != 0.0 && o2 != 0.0 && o3 != 0.0 && o4 != 0.0) return true;
   auto within_box = [](Vec2 p, Vec2 q, Vec2 r) {
     return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
            r.y <= std::max(p.y, q.y);
   };
-  if (o1 == 0 && within_box(a, b, c)) return true;
-  if (o2 == 0 && within_box(a, b, d)) return true;
-  if (o3 == 0 && within_box(c, d, a)) return true;
-  if (o4 == 0 && within_box(c, d, b)) return true;
+  if (o1 == 0.0 && within_box(a, b, c)) return true;
+  if (o2 == 0.0 && within_box(a, b, d)) return true;
+  if (o3 == 0.0 && within_box(c, d, a)) return true;
+  if (o4 == 0.0 && within_box(c, d, b)) return true;
   return false;
 }
 

@@ -151,7 +151,7 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
   reflex.assign(static_cast<std::size_t>(n), 0);
   reflex_list.clear();
   for (int i = 0; i < n; ++i) {
-    if (detail::fast_orientation(at(P(i)), at(i), at(N(i))) <= 0) {
+    if (detail::fast_orient2d(at(P(i)), at(i), at(N(i))) <= 0.0) {
       reflex[static_cast<std::size_t>(i)] = 1;
       reflex_list.push_back(i);
     }
@@ -167,11 +167,11 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
     if (use_grid) grid.remove(i);
   };
   auto update_reflex = [&](int i) {
-    if (detail::fast_orientation(at(P(i)), at(i), at(N(i))) > 0) drop_reflex(i);
+    if (detail::fast_orient2d(at(P(i)), at(i), at(N(i))) > 0.0) drop_reflex(i);
   };
   auto is_ear = [&](int i) {
     const int a = P(i), c = N(i);
-    if (detail::fast_orientation(at(a), at(i), at(c)) <= 0) return false;
+    if (detail::fast_orient2d(at(a), at(i), at(c)) <= 0.0) return false;
     const Vec2 pa = at(a), pb = at(i), pc = at(c);
     const double min_x = std::min({pa.x, pb.x, pc.x}), max_x = std::max({pa.x, pb.x, pc.x});
     const double min_y = std::min({pa.y, pb.y, pc.y}), max_y = std::max({pa.y, pb.y, pc.y});
@@ -179,8 +179,8 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
       if (r == a || r == i || r == c) return false;
       const Vec2 p = at(r);
       if (p.x < min_x || p.x > max_x || p.y < min_y || p.y > max_y) return false;
-      return detail::fast_orientation(pa, pb, p) >= 0 && detail::fast_orientation(pb, pc, p) >= 0 &&
-             detail::fast_orientation(pc, pa, p) >= 0;
+      return detail::fast_orient2d(pa, pb, p) >= 0.0 && detail::fast_orient2d(pb, pc, p) >= 0.0 &&
+             detail::fast_orient2d(pc, pa, p) >= 0.0;
     };
     if (use_grid) return !grid.any_in_box(min_x, max_x, min_y, max_y, inside);
     for (int r : reflex_list) {
@@ -195,7 +195,7 @@ void triangulate_by_ear_clipping(const std::vector<Vec2>& polygon,
     const bool degenerate_fallback = since_last_ear > remaining;
     if (is_ear(current) ||
         (degenerate_fallback &&
-         detail::fast_orientation(at(P(current)), at(current), at(N(current))) >= 0) ||
+         detail::fast_orient2d(at(P(current)), at(current), at(N(current))) >= 0.0) ||
         since_last_ear > 2 * remaining) {
       const int a = P(current), c = N(current);
       add_triangle(a, current, c, false);
@@ -250,7 +250,7 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   const std::size_t k = piece.size();
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
   auto add = [&](int a, int b, int c) {
-    if (detail::fast_orientation(at(a), at(b), at(c)) < 0) std::swap(b, c);
+    if (detail::fast_orient2d(at(a), at(b), at(c)) < 0.0) std::swap(b, c);
     triangles.push_back({a, b, c});
   };
   if (k == 3) {
@@ -308,8 +308,8 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
         const Vec2 s = at(sorted[static_cast<std::size_t>(stack.back())]);
         const Vec2 l = at(sorted[static_cast<std::size_t>(last)]);
         // The diagonal u-s is inside when the chain bulges into the interior at l.
-        const int side = detail::fast_orientation(s, at(u), l);
-        if (left[j] ? side >= 0 : side <= 0) break;
+        const double side = detail::fast_orient2d(s, at(u), l);
+        if (left[j] ? side >= 0.0 : side <= 0.0) break;
         add(u, sorted[static_cast<std::size_t>(last)],
             sorted[static_cast<std::size_t>(stack.back())]);
         last = stack.back();
@@ -390,7 +390,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   // Status edges are left-boundary edges i -> i + 1, which run downward with the interior east.
   // v is east of edge e when it is left of the downward e.
   auto east_of = [&](int v, int e) {
-    return detail::fast_orientation(at(e), at(next(e)), at(v)) > 0;
+    return detail::fast_orient2d(at(e), at(next(e)), at(v)) > 0.0;
   };
   auto position_west_of = [&](int v) {  // the number of status edges west of v
     return static_cast<std::size_t>(
@@ -420,7 +420,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
     const int before = prev(v), after = next(v);
     const bool before_below = is_above(at(v), at(before));
     const bool after_below = is_above(at(v), at(after));
-    const bool convex = detail::fast_orientation(at(before), at(v), at(after)) > 0;
+    const bool convex = detail::fast_orient2d(at(before), at(v), at(after)) > 0.0;
     if (before_below && after_below) {
       if (convex) {  // start
         insert_edge(v);
@@ -489,15 +489,15 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
     // Angles ccw from the direction to next(v), all within the interior angle.
     const Vec2 origin = at(v), reference = at(next(v));
     auto half = [&](int w) {
-      const int side = detail::fast_orientation(origin, reference, at(w));
-      if (side != 0) return side > 0 ? 0 : 1;
+      const double side = detail::fast_orient2d(origin, reference, at(w));
+      if (side != 0.0) return side > 0.0 ? 0 : 1;
       const Vec2 d = at(w) - origin, r = reference - origin;
       return d.x * r.x + d.y * r.y > 0 ? 0 : 1;
     };
     std::sort(first + 1, last - 1, [&](int a, int b) {
       const int ha = half(a), hb = half(b);
       if (ha != hb) return ha < hb;
-      return detail::fast_orientation(origin, at(a), at(b)) > 0;
+      return detail::fast_orient2d(origin, at(a), at(b)) > 0.0;
     });
   }
   auto fan_index = [&](int v, int w) {  // w's entry in v's fan
