@@ -82,6 +82,12 @@ enum HintCode : signed char {
 struct ParentHint {
   std::vector<signed char> code;  // per vertex, a HintCode; empty: nothing inherited
   std::vector<double> value;      // per vertex, the parent's value where inherited; or empty
+  // The vertices Melkman's scan visits, ascending: the fresh ones, the parent's hull vertices, and
+  // the ends of the inherited range [known_first, known_last] (parent hull points, kept even when
+  // collinear so that the reduced ring keeps its shape).
+  std::vector<std::size_t> hull_candidates;
+  std::size_t known_first = 0, known_last = 0;
+  std::size_t start = 0;  // in hull_candidates: the first parent hull vertex, or kNone
 };
 
 bool is_notch(const Ring& ring, std::size_t i) {
@@ -118,34 +124,20 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
   std::size_t known_first = n, known_last = 0;
   std::vector<std::size_t> hull;
   if (hint && hint->code.size() == n) {
-    thread_local std::vector<std::size_t> candidates;
     thread_local Ring points;
-    candidates.clear();
+    const std::vector<std::size_t>& candidates = hint->hull_candidates;
+    known_first = hint->known_first, known_last = hint->known_last;
     // A parent hull vertex the child keeps is a vertex of its hull: Melkman's scan starts there
     // (kNone: none kept, the scan searches for one).
-    std::size_t start = kNone, start_vertex = kNone;  // in candidates, in ring
-    for (std::size_t k = 0; k < n; ++k) {
-      const signed char code = hint->code[k];
-      if (code == kParentHullVertex && start == kNone) start = candidates.size(), start_vertex = k;
-      if (code == kFresh || code == kParentHullVertex) candidates.push_back(k);
-      if (code == kParentHullPoint || code == kParentHullVertex) {
-        // The range's end points stay even when collinear: the reduced ring keeps its shape.
-        if (code == kParentHullPoint && known_first == n) candidates.push_back(k);
-        known_first = std::min(known_first, k);
-        known_last = k;
-      }
-    }
-    if (known_last > known_first && hint->code[known_last] == kParentHullPoint) {
-      candidates.push_back(known_last);
-      std::sort(candidates.begin(), candidates.end());
-    }
+    const std::size_t start = hint->start;
     if (candidates.size() * 4 < n * 3) {
       points.clear();
       for (std::size_t k : candidates) points.push_back(ring[k]);
       hull = simple_polygon_hull_indices(points, start);
       for (std::size_t& h : hull) h = candidates[h];
     } else {
-      hull = simple_polygon_hull_indices(ring, start_vertex);  // little to skip: not worth the copy
+      // Little to skip: not worth the copy.
+      hull = simple_polygon_hull_indices(ring, start == kNone ? kNone : candidates[start]);
     }
   } else {
     hull = simple_polygon_hull_indices(ring);
@@ -1034,12 +1026,27 @@ ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, st
     }
   }
   std::vector<signed char>& code = hint.code;
+  std::vector<std::size_t>& candidates = hint.hull_candidates;
+  hint.known_first = known_first, hint.known_last = known_last;
+  hint.start = kNone;
+  candidates.reserve(ends_in_one_pocket ? known_last - known_first + 1 : size);
   code.assign(size, ends_in_one_pocket ? kInsideCutPocket : kFresh);
-  if (ends_in_one_pocket)
+  if (ends_in_one_pocket) {
     std::fill(code.begin() + std::ptrdiff_t(from_parent), code.end(), kInsideAddedChain);
+  } else {
+    for (std::size_t k = 0; k < known_first; ++k) candidates.push_back(k);
+  }
   constexpr signed char kCodeOfOnHull[3] = {kInsideKeptPocket, kParentHullPoint, kParentHullVertex};
   for (std::size_t k = known_first; k <= known_last; ++k) {
-    code[k] = kCodeOfOnHull[static_cast<std::size_t>(parent_on_hull[source(k)])];
+    const char on_hull = parent_on_hull[source(k)];
+    code[k] = kCodeOfOnHull[static_cast<std::size_t>(on_hull)];
+    if (on_hull == 2 || (on_hull == 1 && (k == known_first || k == known_last))) {
+      if (on_hull == 2 && hint.start == kNone) hint.start = candidates.size();
+      candidates.push_back(k);
+    }
+  }
+  if (!ends_in_one_pocket) {
+    for (std::size_t k = known_last + 1; k < size; ++k) candidates.push_back(k);
   }
   if (with_values) {
     // In two runs: the source wraps round the parent's end at most once.
