@@ -130,7 +130,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
     // A parent hull vertex the child keeps is a vertex of its hull: Melkman's scan starts there
     // (kNone: none kept, the scan searches for one).
     const std::size_t start = hint->start;
-    if (candidates.size() * 4 < n * 3) {
+    if (candidates.size() * 10 < n * 9) {
       points.clear();
       for (std::size_t k : candidates) points.push_back(ring[k]);
       hull = simple_polygon_hull_indices(points, start);
