@@ -1,6 +1,8 @@
 // The predicates' signs against exact 128-bit integer arithmetic, on near-degenerate input.
 #include "hullcook/core/predicates.h"
 
+#include "predicates_inline.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,6 +41,52 @@ TEST(Predicates, ExactOnNearlyCollinearIntegerPoints) {
     ASSERT_EQ(orientation(b, a, c), -expected) << trial;
   }
   EXPECT_GT(degenerate, 100);  // the test does exercise exact collinearity
+}
+
+TEST(Predicates, FilterWithinACoordinateBoundKeepsOrient2dsValues) {
+  // The decomposition orients points within a known box: the filter then compares with one bound
+  // fixed for the box. It must return orient2d's values (so its exact signs), near-degenerate or
+  // not.
+  std::mt19937_64 random(2026);
+  std::uniform_int_distribution<std::int64_t> coordinate(-(std::int64_t{1} << 40),
+                                                         std::int64_t{1} << 40);
+  std::uniform_int_distribution<std::int64_t> offset(-2, 2);
+  std::uniform_int_distribution<int> step(-8, 8);
+  const double max_abs = std::ldexp(1.0, 44);  // the points below stay within it
+  const detail::CoordinateBound bound(max_abs);
+  int degenerate = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::int64_t ax = coordinate(random), ay = coordinate(random);
+    const std::int64_t dx = coordinate(random) / 16, dy = coordinate(random) / 16;
+    const int k = step(random);
+    const std::int64_t bx = ax + dx, by = ay + dy;
+    const std::int64_t cx = ax + k * dx + offset(random), cy = ay + k * dy + offset(random);
+    const Vec2 a{double(ax), double(ay)}, b{double(bx), double(by)}, c{double(cx), double(cy)};
+    const int expected = exact_sign(ax, ay, bx, by, cx, cy);
+    degenerate += expected == 0;
+    ASSERT_EQ(detail::fast_orientation(a, b, c), expected) << trial;
+    ASSERT_EQ(detail::fast_orient2d(a, b, c), orient2d(a, b, c)) << trial;
+  }
+  EXPECT_GT(degenerate, 100);
+}
+
+TEST(Predicates, CoordinateBoundsNestAndRestore) {
+  const double none = detail::static_orient_error_bound;
+  EXPECT_TRUE(std::isinf(none));
+  {
+    const detail::CoordinateBound outer(1000.0);
+    const double outer_bound = detail::static_orient_error_bound;
+    EXPECT_GT(outer_bound, 0.0);
+    {
+      const detail::CoordinateBound inner(1.0);
+      EXPECT_LT(detail::static_orient_error_bound, outer_bound);
+    }
+    EXPECT_EQ(detail::static_orient_error_bound, outer_bound);
+    // Coordinates whose squares would overflow or underflow leave the per-call filter alone.
+    const detail::CoordinateBound huge(1e200);
+    EXPECT_TRUE(std::isinf(detail::static_orient_error_bound));
+  }
+  EXPECT_EQ(detail::static_orient_error_bound, none);
 }
 
 TEST(Predicates, OneUlpOffLine) {

@@ -1443,6 +1443,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
 }
 
 Piece make_piece(const Region& component, double concavity) {
+  const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(component.outer));
   Ring hull;
   for (std::size_t index : simple_polygon_hull_indices(component.outer)) {
     hull.push_back(component.outer[index]);
@@ -1462,6 +1463,10 @@ std::vector<double> outer_vertex_concavity(const Ring& outer, Measure measure, d
 
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings) {
   if (!(settings.tau >= 0.0)) throw std::invalid_argument("decompose: tau must be >= 0");
+  // Every point the decomposition orients is a vertex of the region (or one turned a quarter).
+  double max_abs = detail::max_abs_coordinate(region.outer);
+  for (const Ring& hole : region.holes) max_abs = detail::max_abs_coordinate(hole, max_abs);
+  const detail::CoordinateBound coordinate_bound(max_abs);
   DecompositionTree tree;
   tree.tau_ = settings.tau;
   tree.measure_ = settings.measure;
