@@ -19,54 +19,53 @@ int exact_sign(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t b
   return (det > 0) - (det < 0);
 }
 
-TEST(Predicates, ExactOnNearlyCollinearIntegerPoints) {
-  // Coordinates up to 2^51 are exact doubles; their differences and products are not.
-  std::mt19937_64 random(12345);
-  std::uniform_int_distribution<std::int64_t> coordinate(-(std::int64_t{1} << 50),
-                                                         std::int64_t{1} << 50);
+// Calls check(trial, a, b, c, exact sign) on 20000 triples of integer points with c within 2 units
+// of a + k (b - a), |k| <= max_step: coordinates below 2^bits are exact doubles, their differences
+// and products are not. Returns how many triples were exactly collinear.
+template <typename Check>
+int check_nearly_collinear_triples(std::uint64_t seed, int bits, int max_step, Check&& check) {
+  std::mt19937_64 random(seed);
+  std::uniform_int_distribution<std::int64_t> coordinate(-(std::int64_t{1} << bits),
+                                                         std::int64_t{1} << bits);
   std::uniform_int_distribution<std::int64_t> offset(-2, 2);
-  std::uniform_int_distribution<int> step(-1000, 1000);
+  std::uniform_int_distribution<int> step(-max_step, max_step);
+  // Direction vectors shorter than the coordinates, so that c stays in range.
+  const std::int64_t shrink = std::int64_t{4} * max_step;
   int degenerate = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const std::int64_t ax = coordinate(random), ay = coordinate(random);
-    const std::int64_t dx = coordinate(random) / 4096, dy = coordinate(random) / 4096;
+    const std::int64_t dx = coordinate(random) / shrink, dy = coordinate(random) / shrink;
     const int k = step(random);
     const std::int64_t bx = ax + dx, by = ay + dy;
     const std::int64_t cx = ax + k * dx + offset(random), cy = ay + k * dy + offset(random);
     const int expected = exact_sign(ax, ay, bx, by, cx, cy);
     degenerate += expected == 0;
-    const Vec2 a{double(ax), double(ay)}, b{double(bx), double(by)}, c{double(cx), double(cy)};
-    ASSERT_EQ(orientation(a, b, c), expected) << trial;
-    ASSERT_EQ(orientation(b, c, a), expected) << trial;
-    ASSERT_EQ(orientation(b, a, c), -expected) << trial;
+    check(trial, Vec2{double(ax), double(ay)}, Vec2{double(bx), double(by)},
+          Vec2{double(cx), double(cy)}, expected);
   }
+  return degenerate;
+}
+
+TEST(Predicates, ExactOnNearlyCollinearIntegerPoints) {
+  const int degenerate = check_nearly_collinear_triples(
+      12345, 50, 1000, [](int trial, Vec2 a, Vec2 b, Vec2 c, int expected) {
+        ASSERT_EQ(orientation(a, b, c), expected) << trial;
+        ASSERT_EQ(orientation(b, c, a), expected) << trial;
+        ASSERT_EQ(orientation(b, a, c), -expected) << trial;
+      });
   EXPECT_GT(degenerate, 100);  // the test does exercise exact collinearity
 }
 
 TEST(Predicates, FilterWithinACoordinateBoundKeepsOrient2dsValues) {
   // The decomposition orients points within a known box: the filter then compares with one bound
   // fixed for the box. It must return orient2d's values (so its exact signs), near-degenerate or
-  // not.
-  std::mt19937_64 random(2026);
-  std::uniform_int_distribution<std::int64_t> coordinate(-(std::int64_t{1} << 40),
-                                                         std::int64_t{1} << 40);
-  std::uniform_int_distribution<std::int64_t> offset(-2, 2);
-  std::uniform_int_distribution<int> step(-8, 8);
-  const double max_abs = std::ldexp(1.0, 44);  // the points below stay within it
-  const detail::CoordinateBound bound(max_abs);
-  int degenerate = 0;
-  for (int trial = 0; trial < 20000; ++trial) {
-    const std::int64_t ax = coordinate(random), ay = coordinate(random);
-    const std::int64_t dx = coordinate(random) / 16, dy = coordinate(random) / 16;
-    const int k = step(random);
-    const std::int64_t bx = ax + dx, by = ay + dy;
-    const std::int64_t cx = ax + k * dx + offset(random), cy = ay + k * dy + offset(random);
-    const Vec2 a{double(ax), double(ay)}, b{double(bx), double(by)}, c{double(cx), double(cy)};
-    const int expected = exact_sign(ax, ay, bx, by, cx, cy);
-    degenerate += expected == 0;
-    ASSERT_EQ(detail::fast_orientation(a, b, c), expected) << trial;
-    ASSERT_EQ(detail::fast_orient2d(a, b, c), orient2d(a, b, c)) << trial;
-  }
+  // not. The points below stay within 2^42.
+  const detail::CoordinateBound bound(std::ldexp(1.0, 42));
+  const int degenerate = check_nearly_collinear_triples(
+      2026, 40, 8, [](int trial, Vec2 a, Vec2 b, Vec2 c, int expected) {
+        ASSERT_EQ(detail::fast_orientation(a, b, c), expected) << trial;
+        ASSERT_EQ(detail::fast_orient2d(a, b, c), orient2d(a, b, c)) << trial;
+      });
   EXPECT_GT(degenerate, 100);
 }
 
