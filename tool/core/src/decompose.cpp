@@ -258,6 +258,24 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   }
   thread_local std::vector<Vec2> chain;
   double best_witness_value = -1.0;
+  auto consider_witness = [&](std::size_t i) {
+    if (result.vertex[i] > best_witness_value && is_notch(ring, i)) {
+      best_witness_value = result.vertex[i];
+      result.witness = i;
+    }
+  };
+  if (measure == Measure::sl) {
+    // The values are final: one pass per pocket takes its maximum and the witness.
+    for_each_pocket([&](std::size_t s, std::size_t t) {
+      double sl_max = 0.0;
+      for_each_between(s, t, n, [&](std::size_t i) {
+        sl_max = std::max(sl_max, result.vertex[i]);
+        consider_witness(i);
+      });
+      result.value = std::max(result.value, sl_max);
+    });
+    return result;
+  }
   for_each_pocket([&](std::size_t s, std::size_t t) {
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
@@ -306,12 +324,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       for_each_between(s, t, n, [&](std::size_t i) { result.depth[i] = result.vertex[i]; });
     }
     result.value = std::max(result.value, pocket_value);
-    for_each_between(s, t, n, [&](std::size_t i) {
-      if (result.vertex[i] > best_witness_value && is_notch(ring, i)) {
-        best_witness_value = result.vertex[i];
-        result.witness = i;
-      }
-    });
+    for_each_between(s, t, n, consider_witness);
   });
   return result;
 }
