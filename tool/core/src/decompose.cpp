@@ -87,7 +87,7 @@ struct ParentHint {
   // collinear so that the reduced ring keeps its shape).
   std::vector<std::size_t> hull_candidates;
   std::size_t known_first = 0, known_last = 0;
-  std::size_t start = 0;  // in hull_candidates: the first parent hull vertex, or kNone
+  std::size_t start = kNone;  // in hull_candidates: the first parent hull vertex, or kNone
 };
 
 bool is_notch(const Ring& ring, std::size_t i) {
