@@ -167,9 +167,7 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
       throw InputError(file + ": " + problem);
     };
     // Only finite points are oriented: a ring with another fails before its first test.
-    double max_abs = detail::max_abs_coordinate(region.outer);
-    for (const Ring& hole : region.holes) max_abs = detail::max_abs_coordinate(hole, max_abs);
-    const detail::CoordinateBound coordinate_bound(max_abs);
+    const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
     auto clean_ring = [&](Ring& ring, int ring_index) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
         if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {

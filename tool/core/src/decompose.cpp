@@ -1399,13 +1399,10 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     return known[i] == 1;
   };
   const HoleConcavity& info = e.holes[h];
-  auto closest_visible = [&](std::size_t p, std::size_t skip) -> std::size_t {
+  auto closest_visible = [&](std::size_t p) -> std::size_t {
     // Eq. 5 found the vertex nearest to the joined end, by the same distances and tie-break: when
     // it lies on ∂P0 and p sees it, no other vertex needs a look.
-    if (p == info.joined && info.closest_ring == 0 && info.closest != skip &&
-        sees(p, info.closest)) {
-      return info.closest;
-    }
+    if (p == info.joined && info.closest_ring == 0 && sees(p, info.closest)) return info.closest;
     // Nearest first: the scores are negated distances.
     std::vector<ScoredVertex> candidates(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
@@ -1413,7 +1410,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     }
     const auto chosen = best_accepted_by_score(
         candidates, [&](std::size_t i) { return -distance(outer[i], hole[p]); },
-        [&](std::size_t i) { return i != skip && sees(p, i); });
+        [&](std::size_t i) { return sees(p, i); });
     return chosen ? *chosen : kNone;
   };
   auto best_second = [&](std::size_t p, std::size_t x, std::size_t q) -> std::size_t {
@@ -1444,8 +1441,7 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     const auto [p, q] = attempts[a];
     if (p == q) continue;
     if (a >= 2 && (attempts[a] == attempts[0] || attempts[a] == attempts[1])) continue;
-    if (closest_visible_from[p] == kNotSearched)
-      closest_visible_from[p] = closest_visible(p, kNone);
+    if (closest_visible_from[p] == kNotSearched) closest_visible_from[p] = closest_visible(p);
     const std::size_t x = closest_visible_from[p];
     if (x == kNone) continue;
     const std::size_t y = best_second(p, x, q);
@@ -1477,9 +1473,7 @@ std::vector<double> outer_vertex_concavity(const Ring& outer, Measure measure, d
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings) {
   if (!(settings.tau >= 0.0)) throw std::invalid_argument("decompose: tau must be >= 0");
   // Every point the decomposition orients is a vertex of the region (or one turned a quarter).
-  double max_abs = detail::max_abs_coordinate(region.outer);
-  for (const Ring& hole : region.holes) max_abs = detail::max_abs_coordinate(hole, max_abs);
-  const detail::CoordinateBound coordinate_bound(max_abs);
+  const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
   DecompositionTree tree;
   tree.tau_ = settings.tau;
   tree.measure_ = settings.measure;

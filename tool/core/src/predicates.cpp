@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace hullcook {
 namespace {
@@ -59,11 +58,8 @@ double orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double left = (a.x - c.x) * (b.y - c.y);
   const double right = (a.y - c.y) * (b.x - c.x);
   const double determinant = left - right;
-  // Shewchuk's bound for the floating-point evaluation above (ccwerrboundA).
-  constexpr double epsilon = std::numeric_limits<double>::epsilon() / 2;
-  constexpr double error_bound = (3.0 + 16.0 * epsilon) * epsilon;
   const double magnitude = std::abs(left) + std::abs(right);
-  if (std::abs(determinant) > error_bound * magnitude) return determinant;
+  if (std::abs(determinant) > detail::kOrientErrorBound * magnitude) return determinant;
   return orient2d_exact(a, b, c);
 }
 

@@ -40,12 +40,18 @@ class CoordinateBound {
   double saved_;
 };
 
-// The largest absolute finite coordinate of the rings' points (the argument of CoordinateBound).
+// The largest absolute finite coordinate of the ring's (or region's) points: the argument of
+// CoordinateBound.
 inline double max_abs_coordinate(const Ring& ring, double max_abs = 0.0) {
   for (Vec2 p : ring) {
     if (std::abs(p.x) > max_abs && std::isfinite(p.x)) max_abs = std::abs(p.x);
     if (std::abs(p.y) > max_abs && std::isfinite(p.y)) max_abs = std::abs(p.y);
   }
+  return max_abs;
+}
+inline double max_abs_coordinate(const Region& region) {
+  double max_abs = max_abs_coordinate(region.outer);
+  for (const Ring& hole : region.holes) max_abs = max_abs_coordinate(hole, max_abs);
   return max_abs;
 }
 
