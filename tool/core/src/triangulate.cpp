@@ -226,6 +226,14 @@ struct SweepEvent {
   int vertex;
 };
 
+// The far side of a triangle's edge, as the stack algorithm knows it when it adds the triangle.
+struct Slot {
+  int triangle;  // >= 0: that triangle, across its edge `edge`; else kPieceEdge or kLater
+  int edge;
+};
+constexpr Slot kPieceEdge{-1, 0};  // an edge of the monotone piece: a polygon edge or a diagonal
+constexpr Slot kLater{-2, 0};      // a diagonal whose other triangle comes later
+
 struct MonotoneScratch {
   std::vector<SweepEvent> events, merged;  // vertices from top to bottom, and merge space
   std::vector<std::size_t> run_ends;
@@ -237,25 +245,77 @@ struct MonotoneScratch {
   std::vector<std::pair<int, int>> diagonals;
   std::vector<char> used;  // per fan entry: the half-edge has been walked
   std::vector<int> piece, chain_order, stack;
-  std::vector<char> on_left_chain;        // per vertex of the current piece
-  std::vector<int> edge_head, edge_next;  // per vertex: inner edges (lower end first) for adjacency
-  std::vector<std::array<int, 3>> edge_info;  // (other end, triangle, edge index)
+  std::vector<Slot> stack_slot;     // per stack entry: the far side of its edge to the next entry
+  std::vector<char> on_left_chain;  // per vertex of the current piece
+  // The sweep's diagonals met by one piece's triangle so far, to link with the other piece's:
+  // per lower end, a list of (other end, triangle, edge index, next entry).
+  std::vector<int> diagonal_head;
+  std::vector<std::array<int, 4>> diagonal_sides;
+  std::vector<std::array<int, 3>> own_neighbours;  // when the caller wants none
 };
 
 // Appends the triangles of the polygon piece (vertex indices in ccw order), monotone with respect
-// to is_above. Returns false if the piece is not monotone.
+// to is_above, and their neighbours: the triangle across each inner edge, as soon as both sides
+// exist. Returns false if the piece is not monotone, or on a third triangle at one diagonal.
 bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vector<int>& piece,
                                 MonotoneScratch& scratch,
-                                std::vector<std::array<int, 3>>& triangles) {
+                                std::vector<std::array<int, 3>>& triangles,
+                                std::vector<std::array<int, 3>>& neighbours) {
   const std::size_t k = piece.size();
+  const int n = static_cast<int>(polygon.size());
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
-  auto add = [&](int a, int b, int c) {
-    if (detail::fast_orient2d(at(a), at(b), at(c)) < 0.0) std::swap(b, c);
-    triangles.push_back({a, b, c});
+  bool linked = true;
+  auto link = [&](int t, int e, int other, int other_edge) {
+    neighbours[static_cast<std::size_t>(t)][static_cast<std::size_t>(e)] = other;
+    neighbours[static_cast<std::size_t>(other)][static_cast<std::size_t>(other_edge)] = t;
+  };
+  // Edge x-y of the piece, side e of triangle t: a polygon edge has no neighbour; a diagonal of
+  // the sweep waits for, or meets, the triangle on its other side.
+  auto link_piece_edge = [&](int x, int y, int t, int e) {
+    if (y == (x + 1 == n ? 0 : x + 1) || x == (y + 1 == n ? 0 : y + 1)) return;
+    const int low = std::min(x, y), high = std::max(x, y);
+    std::vector<std::array<int, 4>>& sides = scratch.diagonal_sides;
+    int& head = scratch.diagonal_head[static_cast<std::size_t>(low)];
+    for (int i = head; i >= 0; i = sides[static_cast<std::size_t>(i)][3]) {
+      std::array<int, 4>& side = sides[static_cast<std::size_t>(i)];
+      if (side[0] != high) continue;
+      if (side[1] < 0) {
+        linked = false;  // a third triangle
+      } else {
+        link(t, e, side[1], side[2]);
+        side[1] = -1;
+      }
+      return;
+    }
+    sides.push_back({high, t, e, head});
+    head = static_cast<int>(sides.size()) - 1;
+  };
+  auto meet = [&](Slot far, int x, int y, int t, int e) {
+    if (far.triangle >= 0) {
+      link(t, e, far.triangle, far.edge);
+    } else if (far.triangle == kPieceEdge.triangle) {
+      link_piece_edge(x, y, t, e);
+    }
+  };
+  // Adds the triangle a, b, c (as a, c, b when turned, so counter-clockwise) whose edges ab, bc
+  // and ca have the given far sides. Returns the slot of its edge ca, for the triangle across it.
+  auto add_turned = [&](bool turned, int a, int b, int c, Slot ab, Slot bc, Slot ca)
+      __attribute__((always_inline)) {
+    const int t = static_cast<int>(triangles.size());
+    triangles.push_back(turned ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c});
+    neighbours.push_back({-1, -1, -1});
+    const int edge_ab = turned ? 2 : 0, edge_ca = turned ? 0 : 2;
+    meet(ab, a, b, t, edge_ab);
+    meet(bc, b, c, t, 1);
+    meet(ca, c, a, t, edge_ca);
+    return Slot{t, edge_ca};
+  };
+  auto add = [&](int a, int b, int c, Slot ab, Slot bc, Slot ca) {
+    return add_turned(detail::fast_orient2d(at(a), at(b), at(c)) < 0.0, a, b, c, ab, bc, ca);
   };
   if (k == 3) {
-    add(piece[0], piece[1], piece[2]);
-    return true;
+    add(piece[0], piece[1], piece[2], kPieceEdge, kPieceEdge, kPieceEdge);
+    return linked;
   }
   std::size_t top = 0, bottom = 0;
   for (std::size_t i = 1; i < k; ++i) {
@@ -290,41 +350,57 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   for (std::size_t i = 1; i < k; ++i) {
     if (!is_above(at(sorted[i - 1]), at(sorted[i]))) return false;  // not monotone
   }
+  // The stack holds positions in sorted. The vertex at its bottom is joined to the next vertex
+  // along the piece's boundary, and each entry to the next by a piece edge or an added diagonal,
+  // whose far side stack_slot keeps.
   std::vector<int>& stack = scratch.stack;
-  stack.assign({0, 1});  // positions in sorted
+  std::vector<Slot>& stack_slot = scratch.stack_slot;
+  stack.assign({0, 1});
+  stack_slot.resize(k);
+  stack_slot[0] = kPieceEdge;
+  auto at_stack = [&](std::size_t i) { return sorted[static_cast<std::size_t>(stack[i])]; };
+  // Joins u to every stack entry; its edges to the first and (when last_is_piece_edge) the last
+  // are piece edges. Returns the slot of the last diagonal.
+  auto fan_to_stack = [&](int u, bool last_is_piece_edge) {
+    Slot carry = kPieceEdge;
+    for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+      const bool last = i + 2 == stack.size();
+      carry = add(u, at_stack(i), at_stack(i + 1), carry, stack_slot[i],
+                  last && last_is_piece_edge ? kPieceEdge : kLater);
+    }
+    return carry;
+  };
   for (std::size_t j = 2; j + 1 < k; ++j) {
     const int u = sorted[j];
     const int top_position = stack.back();
     if (left[j] != left[static_cast<std::size_t>(top_position)]) {
-      for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
-        add(u, sorted[static_cast<std::size_t>(stack[i])],
-            sorted[static_cast<std::size_t>(stack[i + 1])]);
-      }
+      const Slot joined = fan_to_stack(u, false);
       stack.assign({static_cast<int>(j - 1), static_cast<int>(j)});
+      stack_slot[0] = joined;
     } else {
       int last = stack.back();
       stack.pop_back();
+      Slot carry = kPieceEdge;  // u - last: the edge along u's chain, then the last diagonal
       while (!stack.empty()) {
         const Vec2 s = at(sorted[static_cast<std::size_t>(stack.back())]);
         const Vec2 l = at(sorted[static_cast<std::size_t>(last)]);
         // The diagonal u-s is inside when the chain bulges into the interior at l.
         const double side = detail::fast_orient2d(s, at(u), l);
         if (left[j] ? side >= 0.0 : side <= 0.0) break;
-        add(u, sorted[static_cast<std::size_t>(last)],
-            sorted[static_cast<std::size_t>(stack.back())]);
+        // u, l, s turn as the side found (exact signs): clockwise on the left chain.
+        carry = add_turned(left[j] != 0, u, sorted[static_cast<std::size_t>(last)],
+                           sorted[static_cast<std::size_t>(stack.back())], carry,
+                           stack_slot[stack.size() - 1], kLater);
         last = stack.back();
         stack.pop_back();
       }
       stack.push_back(last);
+      stack_slot[stack.size() - 1] = carry;
       stack.push_back(static_cast<int>(j));
     }
   }
-  const int u = sorted[k - 1];
-  for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
-    add(u, sorted[static_cast<std::size_t>(stack[i])],
-        sorted[static_cast<std::size_t>(stack[i + 1])]);
-  }
-  return true;
+  fan_to_stack(sorted[k - 1], true);
+  return linked;
 }
 
 // The vertices from top to bottom. A boundary runs up and down in long stretches: the sort
@@ -365,10 +441,12 @@ void sort_from_top(const std::vector<Vec2>& polygon, std::vector<SweepEvent>& ev
 }
 
 // The sweep of de Berg et al. (Computational Geometry, ch. 3) adds diagonals at split and merge
-// vertices; the faces are then monotone pieces. Fills triangles, or returns false (triangles
-// unspecified) on input the sweep does not handle: repeated points, or a ring that is not simple.
+// vertices; the faces are then monotone pieces. Fills triangles and neighbours, or returns false
+// (both unspecified) on input the sweep does not handle: repeated points, or a ring that is not
+// simple.
 bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
                                    std::vector<std::array<int, 3>>& triangles,
+                                   std::vector<std::array<int, 3>>& neighbours,
                                    MonotoneScratch& scratch) {
   const int n = static_cast<int>(polygon.size());
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
@@ -453,12 +531,15 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
     }
   }
   triangles.clear();
+  neighbours.clear();
   if (diagonals.empty()) {
     std::vector<int>& piece = scratch.piece;
     piece.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
-    return triangulate_monotone_piece(polygon, piece, scratch, triangles);
+    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours);
   }
+  scratch.diagonal_head.assign(static_cast<std::size_t>(n), -1);
+  scratch.diagonal_sides.clear();
   // Around each vertex, its neighbours ccw from next to prev (the diagonals lie in between), as
   // a compressed table. The pieces are the faces: arriving at v from u, a face goes on to the
   // neighbour just clockwise of u.
@@ -530,52 +611,12 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
       }
       if (u != v0 || piece.size() < 3) return false;
       walked += piece.size();
-      if (!triangulate_monotone_piece(polygon, piece, scratch, triangles)) return false;
+      if (!triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours)) {
+        return false;
+      }
     }
   }
   return walked == static_cast<std::size_t>(n) + 2 * diagonals.size();
-}
-
-// Fills neighbours for triangles of an n-gon: across polygon edges -1, across inner edges the
-// other triangle sharing them.
-bool link_neighbours(int n, const std::vector<std::array<int, 3>>& triangles,
-                     std::vector<std::array<int, 3>>& neighbours, MonotoneScratch& scratch) {
-  neighbours.assign(triangles.size(), {-1, -1, -1});
-  std::vector<int>& head = scratch.edge_head;
-  std::vector<int>& link = scratch.edge_next;
-  std::vector<std::array<int, 3>>& info = scratch.edge_info;
-  head.assign(static_cast<std::size_t>(n), -1);
-  link.clear();
-  info.clear();
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (int e = 0; e < 3; ++e) {
-      int a = triangles[t][static_cast<std::size_t>(e)];
-      int b = triangles[t][static_cast<std::size_t>(e == 2 ? 0 : e + 1)];
-      if (a > b) std::swap(a, b);
-      if (b == a + 1 || (a == 0 && b == n - 1)) continue;  // a polygon edge
-      int found = -1;
-      for (int k = head[static_cast<std::size_t>(a)]; k >= 0;
-           k = link[static_cast<std::size_t>(k)]) {
-        if (info[static_cast<std::size_t>(k)][0] == b) {
-          found = k;
-          break;
-        }
-      }
-      if (found < 0) {
-        link.push_back(head[static_cast<std::size_t>(a)]);
-        head[static_cast<std::size_t>(a)] = static_cast<int>(info.size());
-        info.push_back({b, static_cast<int>(t), e});
-        continue;
-      }
-      auto& other = info[static_cast<std::size_t>(found)];
-      if (other[1] < 0) return false;  // a third triangle on one edge
-      neighbours[t][static_cast<std::size_t>(e)] = other[1];
-      neighbours[static_cast<std::size_t>(other[1])][static_cast<std::size_t>(other[2])] =
-          static_cast<int>(t);
-      other[1] = -1;
-    }
-  }
-  return true;
 }
 
 }  // namespace
@@ -593,9 +634,9 @@ bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
     if (neighbours) neighbours->push_back({-1, -1, -1});
     return true;
   }
-  return sweep_into_monotone_triangles(polygon, triangles, scratch) &&
-         triangles.size() == static_cast<std::size_t>(n - 2) &&
-         (!neighbours || link_neighbours(n, triangles, *neighbours, scratch));
+  return sweep_into_monotone_triangles(
+             polygon, triangles, neighbours ? *neighbours : scratch.own_neighbours, scratch) &&
+         triangles.size() == static_cast<std::size_t>(n - 2);
 }
 
 constexpr std::size_t kEarClippingBelow = 24;
