@@ -452,6 +452,21 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
   auto next = [&](int v) { return v + 1 == n ? 0 : v + 1; };
   auto prev = [&](int v) { return v == 0 ? n - 1 : v - 1; };
+  triangles.clear();
+  neighbours.clear();
+  std::vector<int>& piece = scratch.piece;
+  // A ring that runs down once and up once is monotone already: no sweep, no sort.
+  int turns = 0;
+  for (int v = 0, going_down = is_above(at(n - 1), at(0)); v < n; ++v) {
+    const bool down = is_above(at(v), at(next(v)));
+    turns += down != going_down;
+    going_down = down;
+  }
+  if (turns == 2) {
+    piece.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
+    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours);
+  }
   std::vector<SweepEvent>& events = scratch.events;
   sort_from_top(polygon, events, scratch.merged, scratch.run_ends);
   for (std::size_t i = 1; i < events.size(); ++i) {
@@ -530,10 +545,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
       helper[static_cast<std::size_t>(e)] = v;
     }
   }
-  triangles.clear();
-  neighbours.clear();
   if (diagonals.empty()) {
-    std::vector<int>& piece = scratch.piece;
     piece.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
     return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours);
@@ -590,7 +602,6 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   };
   std::vector<char>& used = scratch.used;
   used.assign(fan.size(), 0);
-  std::vector<int>& piece = scratch.piece;
   std::size_t walked = 0;
   for (int v0 = 0; v0 < n; ++v0) {
     // Every half-edge but v -> prev(v) (the outside) bounds one piece on its left.
