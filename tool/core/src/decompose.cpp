@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -104,12 +105,13 @@ struct PocketKey {
   bool operator==(const PocketKey&) const = default;
 };
 struct PocketKeyHash {
+  // The coordinates' bits (both zeros as one, since they compare equal), multiplied in: a
+  // lookup per pocket, where std::hash<double> called a byte-wise hash four times.
   std::size_t operator()(const PocketKey& k) const {
-    std::size_t h = k.length;
-    for (double v : {k.sx, k.sy, k.tx, k.ty}) {
-      h ^= std::hash<double>{}(v) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    }
-    return h;
+    auto bits = [](double v) { return v == 0.0 ? 0 : std::bit_cast<std::uint64_t>(v); };
+    std::uint64_t h = k.length;
+    for (double v : {k.sx, k.sy, k.tx, k.ty}) h = (h ^ bits(v)) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
 using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
