@@ -650,7 +650,7 @@ bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
          triangles.size() == static_cast<std::size_t>(n - 2);
 }
 
-constexpr std::size_t kEarClippingBelow = 24;
+constexpr std::size_t kEarClippingBelow = 12;
 
 void triangulate(const std::vector<Vec2>& polygon, std::vector<std::array<int, 3>>& triangles,
                  std::vector<std::array<int, 3>>* neighbours) {
