@@ -1481,7 +1481,10 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   tree.measure_ = settings.measure;
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
+  // A pocket measured again is one a child keeps whole: children inherit those values under
+  // every measure but H2, so only H2 looks pockets up (elsewhere the cache never hit).
   PocketCache cache;
+  PocketCache* const pocket_cache = inherits_values(settings) ? nullptr : &cache;
   std::vector<ParentHint> hints(1);  // per node
   while (!pending.empty()) {
     const int id = pending.back();
@@ -1489,7 +1492,7 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     // Valid until the children are appended below (nodes_ may then reallocate).
     const Region& component = tree.nodes_[std::size_t(id)].component;
     const Evaluation e =
-        evaluate(component, settings.measure, settings.tau, &cache, &hints[std::size_t(id)]);
+        evaluate(component, settings.measure, settings.tau, pocket_cache, &hints[std::size_t(id)]);
     hints[std::size_t(id)] = ParentHint();
     std::pair<ParentHint, ParentHint> child_hints;
     tree.nodes_[std::size_t(id)].concavity = e.value;
