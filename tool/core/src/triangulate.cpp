@@ -252,11 +252,13 @@ struct MonotoneScratch {
   std::vector<int> diagonal_head;
   std::vector<std::array<int, 4>> diagonal_sides;
   std::vector<std::array<int, 3>> own_neighbours;  // when the caller wants none
+  std::size_t made = 0;                            // triangles so far
 };
 
-// Appends the triangles of the polygon piece (vertex indices in ccw order), monotone with respect
-// to is_above, and their neighbours: the triangle across each inner edge, as soon as both sides
-// exist. Returns false if the piece is not monotone, or on a third triangle at one diagonal.
+// Adds the triangles of the polygon piece (vertex indices in ccw order), monotone with respect
+// to is_above, from triangles[scratch.made] on, and their neighbours: the triangle across each
+// inner edge, as soon as both sides exist. Returns false if the piece is not monotone, or on a
+// third triangle at one diagonal.
 bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vector<int>& piece,
                                 MonotoneScratch& scratch,
                                 std::vector<std::array<int, 3>>& triangles,
@@ -301,9 +303,13 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   // and ca have the given far sides. Returns the slot of its edge ca, for the triangle across it.
   auto add_turned = [&](bool turned, int a, int b, int c, Slot ab, Slot bc, Slot ca)
       __attribute__((always_inline)) {
-    const int t = static_cast<int>(triangles.size());
-    triangles.push_back(turned ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c});
-    neighbours.push_back({-1, -1, -1});
+    if (scratch.made == triangles.size()) {  // more than n - 2: not a simple polygon
+      linked = false;
+      return kLater;
+    }
+    const int t = static_cast<int>(scratch.made++);
+    triangles[static_cast<std::size_t>(t)] =
+        turned ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c};
     const int edge_ab = turned ? 2 : 0, edge_ca = turned ? 0 : 2;
     meet(ab, a, b, t, edge_ab);
     meet(bc, b, c, t, 1);
@@ -326,27 +332,28 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   // right chain. Merge the chains from top to bottom.
   std::vector<int>& sorted = scratch.chain_order;
   std::vector<char>& left = scratch.on_left_chain;
-  sorted.clear();
-  left.clear();
+  sorted.resize(k);
+  left.resize(k);
+  std::size_t merged = 0;
+  auto emit = [&](std::size_t i, char on_left) {
+    sorted[merged] = piece[i];
+    left[merged++] = on_left;
+  };
   auto step = [&](std::size_t i, bool forward) {
     return forward ? (i + 1 == k ? 0 : i + 1) : (i == 0 ? k - 1 : i - 1);
   };
-  sorted.push_back(piece[top]);
-  left.push_back(1);
+  emit(top, 1);
   std::size_t down = step(top, true), up = step(top, false);  // next of each chain
   while (down != bottom || up != bottom) {
     if (down != bottom && (up == bottom || is_above(at(piece[down]), at(piece[up])))) {
-      sorted.push_back(piece[down]);
-      left.push_back(1);
+      emit(down, 1);
       down = step(down, true);
     } else {
-      sorted.push_back(piece[up]);
-      left.push_back(0);
+      emit(up, 0);
       up = step(up, false);
     }
   }
-  sorted.push_back(piece[bottom]);
-  left.push_back(1);
+  emit(bottom, 1);
   for (std::size_t i = 1; i < k; ++i) {
     if (!is_above(at(sorted[i - 1]), at(sorted[i]))) return false;  // not monotone
   }
@@ -355,7 +362,9 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
   // whose far side stack_slot keeps.
   std::vector<int>& stack = scratch.stack;
   std::vector<Slot>& stack_slot = scratch.stack_slot;
-  stack.assign({0, 1});
+  stack.clear();
+  stack.push_back(0);
+  stack.push_back(1);
   stack_slot.resize(k);
   stack_slot[0] = kPieceEdge;
   auto at_stack = [&](std::size_t i) { return sorted[static_cast<std::size_t>(stack[i])]; };
@@ -375,7 +384,9 @@ bool triangulate_monotone_piece(const std::vector<Vec2>& polygon, const std::vec
     const int top_position = stack.back();
     if (left[j] != left[static_cast<std::size_t>(top_position)]) {
       const Slot joined = fan_to_stack(u, false);
-      stack.assign({static_cast<int>(j - 1), static_cast<int>(j)});
+      stack.clear();
+      stack.push_back(static_cast<int>(j - 1));
+      stack.push_back(static_cast<int>(j));
       stack_slot[0] = joined;
     } else {
       int last = stack.back();
@@ -452,8 +463,11 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   auto at = [&](int v) { return polygon[static_cast<std::size_t>(v)]; };
   auto next = [&](int v) { return v + 1 == n ? 0 : v + 1; };
   auto prev = [&](int v) { return v == 0 ? n - 1 : v - 1; };
-  triangles.clear();
-  neighbours.clear();
+  // The n - 2 triangles of a simple polygon, filled in as they are made.
+  triangles.resize(static_cast<std::size_t>(n - 2));
+  neighbours.assign(static_cast<std::size_t>(n - 2), {-1, -1, -1});
+  scratch.made = 0;
+  const auto all_made = [&] { return scratch.made == static_cast<std::size_t>(n - 2); };
   std::vector<int>& piece = scratch.piece;
   // A ring that runs down once and up once is monotone already: no sweep, no sort.
   int turns = 0;
@@ -465,7 +479,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   if (turns == 2) {
     piece.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
-    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours);
+    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours) && all_made();
   }
   std::vector<SweepEvent>& events = scratch.events;
   sort_from_top(polygon, events, scratch.merged, scratch.run_ends);
@@ -548,7 +562,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
   if (diagonals.empty()) {
     piece.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) piece[static_cast<std::size_t>(i)] = i;
-    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours);
+    return triangulate_monotone_piece(polygon, piece, scratch, triangles, neighbours) && all_made();
   }
   scratch.diagonal_head.assign(static_cast<std::size_t>(n), -1);
   scratch.diagonal_sides.clear();
@@ -627,7 +641,7 @@ bool sweep_into_monotone_triangles(const std::vector<Vec2>& polygon,
       }
     }
   }
-  return walked == static_cast<std::size_t>(n) + 2 * diagonals.size();
+  return walked == static_cast<std::size_t>(n) + 2 * diagonals.size() && all_made();
 }
 
 }  // namespace
@@ -645,9 +659,8 @@ bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
     if (neighbours) neighbours->push_back({-1, -1, -1});
     return true;
   }
-  return sweep_into_monotone_triangles(
-             polygon, triangles, neighbours ? *neighbours : scratch.own_neighbours, scratch) &&
-         triangles.size() == static_cast<std::size_t>(n - 2);
+  return sweep_into_monotone_triangles(polygon, triangles,
+                                       neighbours ? *neighbours : scratch.own_neighbours, scratch);
 }
 
 constexpr std::size_t kEarClippingBelow = 12;
