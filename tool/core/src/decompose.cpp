@@ -96,9 +96,11 @@ bool is_notch(const Ring& ring, std::size_t i) {
   return detail::fast_orient2d(ring[prev_index(i, n)], ring[i], ring[next_index(i, n)]) < 0.0;
 }
 
-// Shortest paths of pockets already measured in an ancestor. A pocket is its chain from β- to β+;
-// a child's pocket with the same end points and length is the same chain (a cut through it would
-// shorten it), so its paths are reused instead of re-triangulating.
+// Shortest paths of pockets already measured in an ancestor, reused instead of re-triangulating
+// (only H2 measures a pocket again; see decompose()). A pocket is its chain from β- to β+. A
+// child's pocket with the same end points and length is often the same chain, but not always: a
+// hole joined to the boundary can bring other vertices between the same ends (issue 3, a traced
+// sprite's grid). An entry keeps its chain, and a lookup takes it only for an equal chain.
 struct PocketKey {
   double sx, sy, tx, ty;
   std::size_t length;
@@ -114,7 +116,11 @@ struct PocketKeyHash {
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
-using PocketCache = std::unordered_map<PocketKey, std::vector<double>, PocketKeyHash>;
+struct PocketPaths {
+  std::vector<Vec2> chain;
+  std::vector<double> paths;
+};
+using PocketCache = std::unordered_map<PocketKey, PocketPaths, PocketKeyHash>;
 
 // The hull of a ring, using what a hint inherits (see ParentHint). Sets on_hull: 2 for hull
 // vertices, 1 for the parent's points exactly on a hull edge the child keeps; the other points
@@ -295,19 +301,20 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
                                     })));
     double pocket_value = sl_max;
     if (use_sp) {
-      const PocketKey key{bs.x, bs.y, bt.x, bt.y, (t + n - s) % n};
+      chain.clear();
+      chain.push_back(ring[s]);
+      for_each_between(s, t, n, [&](std::size_t i) { chain.push_back(ring[i]); });
+      chain.push_back(ring[t]);
       const std::vector<double>* cached = nullptr;
-      if (cache) {
-        if (auto it = cache->find(key); it != cache->end()) cached = &it->second;
-      }
       std::vector<double> computed;
-      if (!cached) {
-        chain.clear();
-        chain.push_back(ring[s]);
-        for_each_between(s, t, n, [&](std::size_t i) { chain.push_back(ring[i]); });
-        chain.push_back(ring[t]);
+      if (cache) {
+        const auto [entry, added] = cache->try_emplace({bs.x, bs.y, bt.x, bt.y, (t + n - s) % n});
+        if (added || entry->second.chain != chain) {
+          entry->second = {chain, detail::shortest_paths_to_bridge(chain)};
+        }
+        cached = &entry->second.paths;
+      } else {
         computed = detail::shortest_paths_to_bridge(chain);
-        if (cache) cached = &cache->emplace(key, std::move(computed)).first->second;
       }
       const std::vector<double>& paths = cached ? *cached : computed;
       double sp_max = 0.0;
@@ -1481,8 +1488,8 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   tree.measure_ = settings.measure;
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
-  // A pocket measured again is one a child keeps whole: children inherit those values under
-  // every measure but H2, so only H2 looks pockets up (elsewhere the cache never hit).
+  // Under every measure but H2 a child inherits the values of the pockets it keeps whole, and
+  // measures only new chains: only H2 looks pockets up.
   PocketCache cache;
   PocketCache* const pocket_cache = inherits_values(settings) ? nullptr : &cache;
   std::vector<ParentHint> hints(1);  // per node
