@@ -262,8 +262,18 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
         measure_straight_line(s, t, false);
       }
     });
-    for (char& mark : on_hull) mark = mark == kFoundOnEdge ? 1 : mark;
   }
+  // A pocket measured again above is measured afresh under every measure, whatever its code says:
+  // its straight-line values replaced the inherited ones.
+  auto is_kept = [&](std::size_t s, std::size_t t) {
+    return pocket_code(s) == kInsideKeptPocket && on_hull[s] != kFoundOnEdge &&
+           on_hull[t] != kFoundOnEdge;
+  };
+  auto settle_found_points = [&] {
+    if (found_on_edge) {
+      for (char& mark : on_hull) mark = mark == kFoundOnEdge ? 1 : mark;
+    }
+  };
   thread_local std::vector<Vec2> chain;
   double best_witness_value = -1.0;
   auto consider_witness = [&](std::size_t i) {
@@ -282,6 +292,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       });
       result.value = std::max(result.value, sl_max);
     });
+    settle_found_points();
     return result;
   }
   for_each_pocket([&](std::size_t s, std::size_t t) {
@@ -293,12 +304,11 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     // normal opposes the bridge's.
     const bool is_hybrid = measure == Measure::h1 || measure == Measure::h2;
     // A pocket kept whole has its values already (inherited above).
-    const bool use_sp =
-        pocket_code(s) != kInsideKeptPocket &&
-        (measure == Measure::sp || (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
-                                      const Vec2 e = ring[next_index(i, n)] - ring[i];
-                                      return e.x * along.x + e.y * along.y < 0.0;
-                                    })));
+    const bool use_sp = !is_kept(s, t) && (measure == Measure::sp ||
+                                           (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
+                                              const Vec2 e = ring[next_index(i, n)] - ring[i];
+                                              return e.x * along.x + e.y * along.y < 0.0;
+                                            })));
     double pocket_value = sl_max;
     if (use_sp) {
       chain.clear();
@@ -335,6 +345,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     result.value = std::max(result.value, pocket_value);
     for_each_between(s, t, n, consider_witness);
   });
+  settle_found_points();
   return result;
 }
 
