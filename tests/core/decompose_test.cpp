@@ -190,6 +190,13 @@ void check_tree(const Region& region, const DecompositionTree& tree, Measure mea
       }
     }
   }
+  // Children inherit their parents' values where a pocket is kept whole: every node must still
+  // hold what a fresh measurement of its component gives (see Issue3 in tests/cook).
+  for (std::size_t id = 0; id < tree.nodes().size(); ++id) {
+    const DecompositionTree::Node& node = tree.nodes()[id];
+    ASSERT_EQ(node.concavity, measure_concavity(node.component, measure, tree.built_tau()))
+        << "node " << id;
+  }
   EXPECT_EQ(tree.pieces_at(std::numeric_limits<double>::infinity()).size(), 1u);
   const std::size_t finest = tree.pieces_at(tree.built_tau()).size();
   for (std::size_t budget : {std::size_t{1}, std::size_t{2}, finest / 2, finest}) {
