@@ -223,7 +223,8 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   // it becomes a hull point (marked kFoundOnEdge for now), splitting the bridge so that every
   // pocket stays simple; the pockets it splits are measured again with their own bridges.
   constexpr char kFoundOnEdge = 3;
-  const bool inherits = hint && hint->value.size() == n && measure != Measure::h2;
+  // A hint carries values only where the measure inherits them (see inherits_values).
+  const bool inherits = hint && hint->value.size() == n;
   // A pocket's code is its first vertex's (see ParentHint).
   auto pocket_code = [&](std::size_t s) {
     return inherits ? hint->code[next_index(s, n)] : static_cast<signed char>(kFresh);
@@ -1082,13 +1083,15 @@ ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, st
     for (std::size_t k = known_last + 1; k < size; ++k) candidates.push_back(k);
   }
   if (with_values) {
-    // In two runs: the source wraps round the parent's end at most once.
-    hint.value.resize(size);
+    // In two runs: the source wraps round the parent's end at most once. The added chain's
+    // vertices (from from_parent on) inherit nothing: zero.
     const std::size_t before_wrap = std::min(from_parent, n - source_first);
-    std::copy_n(parent.vertex.begin() + std::ptrdiff_t(source_first), before_wrap,
-                hint.value.begin());
-    std::copy_n(parent.vertex.begin(), from_parent - before_wrap,
-                hint.value.begin() + std::ptrdiff_t(before_wrap));
+    const auto from = parent.vertex.begin() + std::ptrdiff_t(source_first);
+    hint.value.reserve(size);
+    hint.value.assign(from, from + std::ptrdiff_t(before_wrap));
+    hint.value.insert(hint.value.end(), parent.vertex.begin(),
+                      parent.vertex.begin() + std::ptrdiff_t(from_parent - before_wrap));
+    hint.value.resize(size);
   }
   return hint;
 }
