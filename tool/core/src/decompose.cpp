@@ -1311,6 +1311,31 @@ double provisional_distance(Vec2 a, Vec2 b) {
   return squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : distance(a, b);
 }
 
+// first_accepted_by_score where the best scored candidate is usually taken (a hole's searches,
+// and a notch's cut, whose best diagonal by Eq. 8 was valid at every split we counted on the
+// Nazca models): one pass finds it without ordering the rest; if it is refused, the full search
+// runs.
+template <typename Exact, typename Accept>
+std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& provisional,
+                                                  Exact&& exact, Accept&& accept) {
+  if (provisional.empty()) return std::nullopt;
+  const ScoredVertex* top = &provisional[0];
+  for (const ScoredVertex& candidate : provisional) {
+    if (scores_before(candidate, *top)) top = &candidate;
+  }
+  ScoredVertex best{exact(top->index), top->index};
+  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower.
+  for (const ScoredVertex& candidate : provisional) {
+    if (&candidate == top || best.score > candidate.score + std::abs(candidate.score) * 1e-9) {
+      continue;
+    }
+    const ScoredVertex scored{exact(candidate.index), candidate.index};
+    if (scores_before(scored, best)) best = scored;
+  }
+  if (accept(best.index)) return best.index;
+  return first_accepted_by_score(provisional, exact, accept);
+}
+
 // Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
 std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
@@ -1360,7 +1385,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return region.holes.empty() ? is_diagonal_of_outer(view, ring, r, i)
                                 : view.is_diagonal({0, r}, {0, i});
   };
-  if (const auto chosen = first_accepted_by_score(
+  if (const auto chosen = best_accepted_by_score(
           resolving, [&](std::size_t i) { return eq8(i, distance(pr, ring[i])); }, is_valid)) {
     return split_outer(region, r, *chosen, concavity, inherits_values(settings), hints);
   }
@@ -1376,29 +1401,6 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return split_outer(region, r, chosen->index, concavity, inherits_values(settings), hints);
   }
   return std::nullopt;
-}
-
-// first_accepted_by_score where the best scored candidate is usually taken (the hole searches):
-// one pass finds it without ordering the rest; if it is refused, the full search runs.
-template <typename Exact, typename Accept>
-std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& provisional,
-                                                  Exact&& exact, Accept&& accept) {
-  if (provisional.empty()) return std::nullopt;
-  const ScoredVertex* top = &provisional[0];
-  for (const ScoredVertex& candidate : provisional) {
-    if (scores_before(candidate, *top)) top = &candidate;
-  }
-  ScoredVertex best{exact(top->index), top->index};
-  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower.
-  for (const ScoredVertex& candidate : provisional) {
-    if (&candidate == top || best.score > candidate.score + std::abs(candidate.score) * 1e-9) {
-      continue;
-    }
-    const ScoredVertex scored{exact(candidate.index), candidate.index};
-    if (scores_before(scored, best)) best = scored;
-  }
-  if (accept(best.index)) return best.index;
-  return first_accepted_by_score(provisional, exact, accept);
 }
 
 // Algorithm 4.2 for a hole: join p to the closest visible vertex of ∂P0, and its antipode to the
