@@ -112,6 +112,84 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring) {
   return simple_polygon_hull_indices(ring, ring.size());
 }
 
+namespace {
+
+// Steps of Melkman's scan over the ring's vertices first + k for k in [k, k_end), on the deque
+// [bottom, top]: the hull of the chain so far, counter-clockwise from bottom to top, with the last
+// added vertex at both ends.
+// The filtered steps decide every orientation by the static error bound in force (see
+// CoordinateBound) and stop, returning false with the state as it was before vertex k, at the
+// first one too close to call: without a call to the exact predicate in their loop, their points
+// stay in registers. The exact steps decide all. Both take the same decisions.
+template <bool kFiltered>
+bool melkman_steps(const Ring& ring, std::size_t first, std::vector<std::size_t>& deque,
+                   std::size_t& bottom_io, std::size_t& top_io, std::size_t& k_io,
+                   std::size_t k_end) {
+  const std::size_t n = ring.size();
+  const double bound = detail::static_orient_error_bound;
+  // Sets left to whether c lies strictly left of a->b; false: too close to call (filtered only).
+  auto decide_left = [bound](Vec2 a, Vec2 b, Vec2 c, bool& left) {
+    if constexpr (kFiltered) {
+      const double determinant = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+      left = determinant > 0.0;
+      return std::abs(determinant) > bound;
+    } else {
+      left = detail::fast_orient2d(a, b, c) > 0.0;
+      return true;
+    }
+  };
+  std::size_t bottom = bottom_io, top = top_io, k = k_io;
+  // The two edges at the last added vertex, whose sides decide whether a vertex is inside.
+  Vec2 bottom_from = ring[deque[bottom]], bottom_to = ring[deque[bottom + 1]];
+  Vec2 top_from = ring[deque[top - 1]], top_to = ring[deque[top]];
+  auto stop = [&] {
+    bottom_io = bottom, top_io = top, k_io = k;
+    return false;
+  };
+  for (std::size_t index = first + k < n ? first + k : first + k - n; k < k_end;
+       ++k, index = index + 1 == n ? 0 : index + 1) {
+    const Vec2 p = ring[index];
+    // The tests against the edges at the last added vertex are also the first tests of the pops
+    // below (the bottom's pops never reach the top's edge: p cannot see every hull edge).
+    bool left_of_bottom, left_of_top;
+    if (!decide_left(bottom_from, bottom_to, p, left_of_bottom)) return stop();
+    if (!decide_left(top_from, top_to, p, left_of_top)) return stop();
+    if (left_of_bottom && left_of_top) continue;
+    std::size_t new_bottom = bottom, new_top = top;
+    if (!left_of_bottom) {
+      ++new_bottom;
+      for (bool left = false;; ++new_bottom) {
+        if (!decide_left(ring[deque[new_bottom]], ring[deque[new_bottom + 1]], p, left)) {
+          return stop();
+        }
+        if (left) break;
+      }
+    }
+    // The bottom's new slot, restored if the top's pops stop.
+    const std::size_t slot = new_bottom - 1;
+    const std::size_t overwritten = deque[slot];
+    deque[slot] = index;
+    if (!left_of_top) {
+      --new_top;
+      for (bool left = false;; --new_top) {
+        if (!decide_left(ring[deque[new_top - 1]], ring[deque[new_top]], p, left)) {
+          deque[slot] = overwritten;
+          return stop();
+        }
+        if (left) break;
+      }
+    }
+    deque[++new_top] = index;
+    bottom = slot, top = new_top;
+    bottom_from = p, bottom_to = ring[deque[bottom + 1]];
+    top_from = ring[deque[top - 1]], top_to = p;
+  }
+  bottom_io = bottom, top_io = top, k_io = k;
+  return true;
+}
+
+}  // namespace
+
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t first) {
   const std::size_t n = ring.size();
   if (n < 4) return convex_hull_indices(ring);
@@ -129,8 +207,6 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   const int start_turn =
       detail::fast_orientation(ring[vertex(0)], ring[vertex(1)], ring[vertex(2)]);
   if (start_turn == 0) return convex_hull_indices(ring);
-  // The deque holds the hull of the chain so far, counter-clockwise from bottom to top, with the
-  // last added vertex at both ends.
   // Kept per thread: decompositions take the hull of every component, and a fresh buffer of
   // this size is an mmap and munmap for large rings.
   thread_local std::vector<std::size_t> deque;
@@ -139,30 +215,14 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   deque[bottom] = deque[top] = vertex(2);
   deque[bottom + 1] = start_turn > 0 ? vertex(0) : vertex(1);
   deque[bottom + 2] = start_turn > 0 ? vertex(1) : vertex(0);
-  // The two edges at the last added vertex, whose sides decide whether a vertex is inside.
-  Vec2 bottom_from = point(deque[bottom]), bottom_to = point(deque[bottom + 1]);
-  Vec2 top_from = point(deque[top - 1]), top_to = point(deque[top]);
-  for (std::size_t k = 3, index = vertex(3); k < n; ++k, index = index + 1 == n ? 0 : index + 1) {
-    const Vec2 p = ring[index];
-    // The tests against the edges at the last added vertex are also the first tests of the pops
-    // below (the bottom's pops never reach the top's edge: p cannot see every hull edge).
-    const bool left_of_bottom = detail::fast_orient2d(bottom_from, bottom_to, p) > 0.0;
-    const bool left_of_top = detail::fast_orient2d(top_from, top_to, p) > 0.0;
-    if (left_of_bottom && left_of_top) continue;
-    if (!left_of_bottom) {
-      ++bottom;
-      while (detail::fast_orient2d(point(deque[bottom]), point(deque[bottom + 1]), p) <= 0.0) {
-        ++bottom;
-      }
+  std::size_t k = 3;
+  if (detail::static_orient_error_bound == std::numeric_limits<double>::infinity()) {
+    melkman_steps<false>(ring, first, deque, bottom, top, k, n);  // no bound to filter with
+  } else {
+    // Filtered steps; a vertex they cannot decide is taken by an exact step.
+    while (!melkman_steps<true>(ring, first, deque, bottom, top, k, n)) {
+      melkman_steps<false>(ring, first, deque, bottom, top, k, k + 1);
     }
-    deque[--bottom] = index;
-    if (!left_of_top) {
-      --top;
-      while (detail::fast_orient2d(point(deque[top - 1]), point(deque[top]), p) <= 0.0) --top;
-    }
-    deque[++top] = index;
-    bottom_from = p, bottom_to = point(deque[bottom + 1]);
-    top_from = point(deque[top - 1]), top_to = p;
   }
   // Drop any vertex left collinear (a chain may double back along a hull edge), keeping the
   // counter-clockwise order.
