@@ -4,6 +4,7 @@
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
+#include "predicates_inline.h"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,16 @@ void expect_same_hull(const Ring& ring, const std::string& what) {
   // Started at any vertex of the hull (a few, on large rings).
   for (std::size_t k = 0; k < expected.size(); k += 1 + expected.size() / 8) {
     ASSERT_EQ(simple_polygon_hull_indices(ring, expected[k]), expected) << "from " << expected[k];
+  }
+  {
+    // Within a decomposition a static error bound is in force: the scan then takes the filtered
+    // steps, and an exact step wherever the bound cannot decide (these grids make many).
+    const detail::CoordinateBound bound(detail::max_abs_coordinate(ring));
+    ASSERT_EQ(simple_polygon_hull_indices(ring), expected) << "with a static bound";
+    for (std::size_t k = 0; k < expected.size(); k += 1 + expected.size() / 8) {
+      ASSERT_EQ(simple_polygon_hull_indices(ring, expected[k]), expected)
+          << "with a static bound, from " << expected[k];
+    }
   }
   Ring reversed(ring.rbegin(), ring.rend());
   ASSERT_EQ(simple_polygon_hull_indices(reversed), convex_hull_indices(reversed));
@@ -65,6 +76,38 @@ TEST(SimplePolygonHull, MatchesPointSetHullOnIntegerGridPolygons) {
     ++checked;
   }
   EXPECT_GT(checked, 500);
+}
+
+// Chains along a line, each vertex a few ulps off it, closed by a vertex far below: which of them
+// are hull vertices depends on orientations whose rounded determinants have the wrong sign.
+TEST(SimplePolygonHull, MatchesPointSetHullOnNearlyCollinearChains) {
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> ulps(-3, 3);
+  int checked = 0;
+  for (int attempt = 0; attempt < 300; ++attempt) {
+    const int n = 5 + attempt % 40;
+    const double slope = 1.0 / (3 + attempt % 5), step = 1.0 / (7 + attempt % 3);
+    Region region;
+    for (int i = 0; i < n; ++i) {
+      const double x = 0.5 + i * step;
+      double y = x * slope;
+      for (int k = ulps(random); k != 0; k += k > 0 ? -1 : 1) {
+        y = std::nextafter(y, k > 0 ? 1e300 : -1e300);
+      }
+      region.outer.push_back({x, y});
+    }
+    region.outer.push_back({0.5 + n * step * 0.5, -10.0});
+    std::reverse(region.outer.begin(), region.outer.end());  // counter-clockwise
+    std::vector<Region> cleaned;
+    try {
+      cleaned = clean_and_validate({region}, "chain");
+    } catch (const std::exception&) {
+      continue;
+    }
+    expect_same_hull(cleaned[0].outer, "attempt " + std::to_string(attempt));
+    ++checked;
+  }
+  EXPECT_GT(checked, 250);
 }
 
 TEST(SimplePolygonHull, MatchesPointSetHullOnSampleComponents) {
