@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 namespace hullcook {
 namespace {
@@ -121,6 +123,79 @@ TEST_F(CookCli, UnknownOutputExtensionIsUsageError) {
   fs::path input = write("square.png", opaque_square_png());
   auto result = run_hullcook("cook " + input.string() + " -o " + (directory / "out.txt").string());
   EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+}
+
+// The tests below come from an adversarial review of the command line (2026-12-01): each broke
+// a ground rule before its fix.
+
+TEST_F(CookCli, ReviewAFailedSecondOutputLeavesNoFirstOutput) {
+  fs::path input = write("square.png", opaque_square_png());
+  const fs::path bundle = directory / "out.hcb";
+  auto result = run_hullcook("cook " + input.string() + " -o " + bundle.string() + " --json " +
+                             (directory / "missing/out.json").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::output_failed)) << result.output;
+  EXPECT_FALSE(fs::exists(bundle));
+  result = run_hullcook("cook " + input.string() + " -o " + bundle.string() + " --json " +
+                        (directory / "out.txt").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+  EXPECT_FALSE(fs::exists(bundle));
+  EXPECT_FALSE(fs::exists(directory / "out.txt"));
+  std::size_t left = std::distance(fs::directory_iterator(directory), fs::directory_iterator{});
+  EXPECT_EQ(left, 1u) << "temporary files were left behind";
+}
+
+TEST_F(CookCli, ReviewAnOutputNeverReplacesAnInput) {
+  const std::string png = opaque_square_png();
+  fs::path input = write("square.png", png);
+  auto result = run_hullcook("preview " + input.string() + " -o " + input.string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+  EXPECT_NE(result.output.find("would replace an input"), std::string::npos) << result.output;
+  // The physics sidecar the cook reads beside an image is an input too.
+  const std::string sidecar_text = "{\"density\": 2}";
+  fs::path sidecar = write("square.physics.json", sidecar_text);
+  result = run_hullcook("cook " + directory.string() + " -o " + (directory / "out.hcb").string() +
+                        " --json " + sidecar.string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  std::ifstream png_stream(input, std::ios::binary), sidecar_stream(sidecar);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(png_stream), {}), png);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(sidecar_stream), {}), sidecar_text);
+}
+
+TEST_F(CookCli, ReviewOptionsOutOfRangeAreUsageErrors) {
+  fs::path input = write("square.png", opaque_square_png());
+  const fs::path output = directory / "out.hcb";
+  for (const char* option :
+       {"--max-verts 2", "--max-verts 1", "--density nan", "--friction inf", "--density -1",
+        "--tau 1e30", "--ppu 1e-30", "--ppu 1e300", "--max-pieces -1", "--max-pixels -1",
+        "--weld -1", "--simplify nan", "--sc nan", "--sd inf", "--min-blob-area nan",
+        "--threads -1", "--category 70000"}) {
+    auto result = run_hullcook("cook " + input.string() + " -o " + output.string() + " " + option);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage))
+        << option << ": " << result.output;
+    EXPECT_FALSE(fs::exists(output)) << option;
+  }
+}
+
+TEST_F(CookCli, ReviewASymbolicLinkLoopInADirectoryIsSkipped) {
+  fs::path images = directory / "images";
+  fs::create_directories(images);
+  std::ofstream(images / "square.png", std::ios::binary) << opaque_square_png();
+  fs::create_directory_symlink("loop", images / "loop");
+  auto result =
+      run_hullcook("cook " + images.string() + " -o " + (directory / "out.hcb").string() + " -q");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(directory / "out.hcb"));
+}
+
+TEST_F(CookCli, ReviewASidecarThatIsADirectoryIsBadInput) {
+  write("square.png", opaque_square_png());
+  fs::create_directories(directory / "square.physics.json");
+  auto result =
+      run_hullcook("cook " + directory.string() + " -o " + (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("square.physics.json"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 #include "cook_options.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace hullcook::cli {
@@ -61,10 +63,24 @@ void add_cook(CLI::App& root, CommandAction& action) {
             "OUT.hcb|.gltf|.glb|.json or --json OUT");
       }
       finish_cook_options(*app, command->settings, command->options);
+      // What can be refused before cooking is: a long cook must not end in a usage error.
+      std::vector<std::filesystem::path> outputs;
+      if (!command->output.empty()) outputs.emplace_back(command->output);
+      if (!command->json.empty()) {
+        if (std::filesystem::path(command->json).extension() != ".json") {
+          throw UsageError("--json " + command->json + ": the debug JSON is written as .json");
+        }
+        outputs.emplace_back(command->json);
+      }
+      for (const std::filesystem::path& output : outputs) check_output_path(output);
+      if (outputs.size() == 2 && std::filesystem::path(command->output).lexically_normal() ==
+                                     std::filesystem::path(command->json).lexically_normal()) {
+        throw UsageError("-o and --json name the same file: " + command->json);
+      }
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
+      for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
       CookResult result = cook(inputs, command->settings);
-      if (!command->output.empty()) write_output(result, command->output, command->settings);
-      if (!command->json.empty()) write_output(result, command->json, command->settings);
+      write_outputs(result, outputs, command->settings);
       if (!command->quiet) print_summary(result);
       return 0;
     };

@@ -34,6 +34,7 @@ int run_decompose(const DecomposeOptions& options) {
   if (!measure) {
     throw UsageError("--measure: '" + options.measure + "' is not one of sl, sp, h1, h2");
   }
+  if (!options.json.empty()) check_not_an_input(options.json, {options.input});
   const std::vector<Region> regions = read_poly_file(options.input);
   const double tau = tolerance.resolve(enclosing_radius(regions));
   const DecomposeSettings settings{tau, *measure, options.sc, options.sd};

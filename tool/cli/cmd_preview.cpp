@@ -3,6 +3,7 @@
 #include "cook_options.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/output_file.h"
 #include "hullcook/cook/preview.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
@@ -35,6 +36,7 @@ int run_preview(const CLI::App& command, PreviewCommand& preview) {
   if (std::filesystem::is_directory(preview.input, error)) {
     throw UsageError(preview.input.string() + ": preview draws one file, not a directory");
   }
+  check_not_an_input(preview.output, {preview.input});
   CookResult result = cook({preview.input}, preview.settings);
   if (result.assets.empty()) throw InputError(preview.input.string() + ": nothing to draw");
   const CookedAsset& asset = result.assets.front();

@@ -3,6 +3,7 @@
 #include "hullcook/core/error.h"
 
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace hullcook::cli {
@@ -24,6 +25,24 @@ double parse_number(const std::string& text, const char* option) {
   }
   return value;
 }
+
+// A finite number in [low, high]. CLI11's NonNegativeNumber lets nan and inf through, and an
+// unsigned option would wrap -1 round to "unlimited".
+CLI::Validator number_in(double low, double high, const std::string& what) {
+  return CLI::Validator(
+      [low, high, what](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size() || !(value >= low) ||
+            !(value <= high)) {
+          return "'" + text + "' is not " + what;
+        }
+        return std::string();
+      },
+      what);
+}
+
+const double kFloatMax = std::numeric_limits<float>::max();
 
 std::array<std::uint8_t, 3> parse_color(const std::string& text) {
   std::string hex = text;
@@ -49,15 +68,18 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->capture_default_str()
       ->group("Decomposition");
   command.add_option("--sc", settings.sc, "Eq. 8 weight of the concavity at the cut's far end")
+      ->check(number_in(0, 1e9, "a weight in [0, 1e9]"))
       ->capture_default_str()
       ->group("Decomposition");
   command.add_option("--sd", settings.sd, "Eq. 8 weight of the cut's length")
+      ->check(number_in(1e-9, 1e9, "a weight in [1e-9, 1e9]"))
       ->capture_default_str()
       ->group("Decomposition");
   command
       .add_option("--max-pieces", settings.max_pieces,
                   "Shape budget: the finest decomposition with at most K pieces per asset "
                   "(0 = no budget; τ still bounds it from below)")
+      ->check(number_in(0, 1e9, "a count of pieces (0 = no budget)"))
       ->group("Decomposition");
   command
       .add_option("--lod", options.lods,
@@ -74,25 +96,29 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->group("Tracing");
   command
       .add_option("--min-blob-area", settings.min_blob_area, "Drop blobs smaller than this [px²]")
+      ->check(number_in(0, 1e18, "an area in [0, 1e18] px²"))
       ->capture_default_str()
       ->group("Tracing");
   command
       .add_option("--min-hole-area", settings.min_hole_area, "Fill holes smaller than this [px²]")
+      ->check(number_in(0, 1e18, "an area in [0, 1e18] px²"))
       ->capture_default_str()
       ->group("Tracing");
   command
       .add_option("--simplify", options.simplify,
                   "Outline simplification error bound [px] (default τ/4, at most 1 px)")
+      ->check(number_in(0, 1e9, "a length in [0, 1e9] px"))
       ->group("Tracing");
   command
       .add_option("--max-pixels", settings.max_pixels,
                   "Refuse images with more pixels than this, before decoding")
+      ->check(number_in(1, 1e15, "a pixel count in [1, 1e15]"))
       ->capture_default_str()
       ->group("Tracing");
 
   command
       .add_option("--ppu", settings.pixels_per_unit, "Pixels per output unit (e.g. 32 px = 1 m)")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(1e-6, 1e6, "a scale in [1e-6, 1e6] pixels per unit"))
       ->capture_default_str()
       ->group("World");
   command
@@ -106,28 +132,40 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
   command
       .add_option("--max-verts", settings.max_verts,
                   "Most vertices per hull (Box2D 2.4: 8; 0 = unlimited, e.g. for Chipmunk)")
+      ->check(number_in(0, 1e9, "a vertex count (0 = unlimited, else at least 3)"))
       ->capture_default_str()
       ->group("Engine");
   command
       .add_option("--weld", options.weld,
                   "No two hull vertices closer than this [output units]; default 0.005, "
                   "Box2D 2.4's b2_linearSlop at 1 unit = 1 m")
+      ->check(number_in(0, 1e9, "a distance in [0, 1e9] output units"))
       ->group("Engine");
 
-  command.add_option("--density", options.physics.density, "Density [kg/unit²]")->group("Physics");
+  const CLI::Validator physical = number_in(0, kFloatMax, "a finite number >= 0");
+  command.add_option("--density", options.physics.density, "Density [kg/unit²]")
+      ->check(physical)
+      ->group("Physics");
   command.add_option("--friction", options.physics.friction, "Friction coefficient")
+      ->check(physical)
       ->group("Physics");
   command.add_option("--restitution", options.physics.restitution, "Restitution (bounciness)")
+      ->check(physical)
       ->group("Physics");
   command.add_flag("--sensor", options.physics.sensor, "Mark the bodies' shapes as sensors")
       ->group("Physics");
+  const CLI::Validator bits = number_in(0, 65535, "an integer in 0..65535");
   command.add_option("--category", options.physics.category_bits, "Collision category bits")
+      ->check(bits)
       ->group("Physics");
-  command.add_option("--mask", options.physics.mask_bits, "Collision mask bits")->group("Physics");
+  command.add_option("--mask", options.physics.mask_bits, "Collision mask bits")
+      ->check(bits)
+      ->group("Physics");
 
   command
       .add_option("--threads", settings.threads,
                   "Worker threads (0 = all cores); the output never depends on it")
+      ->check(number_in(0, 4096, "a thread count in 0..4096"))
       ->group("Output");
 }
 
@@ -148,6 +186,10 @@ void finish_cook_options(const CLI::App& command, Settings& settings, const Cook
   if (pivot.size() != 2) throw UsageError("--pivot: expected u,v such as 0.5,0.5");
   settings.pivot_u = parse_number(pivot[0], "--pivot");
   settings.pivot_v = parse_number(pivot[1], "--pivot");
+  if (settings.max_verts == 1 || settings.max_verts == 2) {
+    throw UsageError("--max-verts: " + std::to_string(settings.max_verts) +
+                     " is too few for a polygon: use 0 (unlimited) or at least 3");
+  }
   if (options.weld >= 0) settings.weld = options.weld;
   if (options.simplify >= 0) settings.simplify = options.simplify;
   bool any_physics = false;

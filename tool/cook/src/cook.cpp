@@ -49,7 +49,9 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       std::vector<InputFile> found;
       for (auto it = std::filesystem::recursive_directory_iterator(input, error);
            !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
-        if (it->is_regular_file() && is_image_file(it->path())) {
+        // The non-throwing form: a symbolic link loop is an entry that is no regular file.
+        std::error_code entry_error;
+        if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
           found.push_back({it->path(), it->path().lexically_relative(input).generic_string()});
         }
       }
@@ -223,17 +225,24 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
                                              const Settings& settings) {
   std::filesystem::path sidecar = input;
   sidecar.replace_extension(".physics.json");
-  if (!std::filesystem::exists(sidecar)) return settings.physics;
+  std::error_code error;
+  if (!std::filesystem::exists(sidecar, error)) return settings.physics;
+  if (!std::filesystem::is_regular_file(sidecar, error)) {
+    throw InputError(sidecar.string() + ": not a file of physics properties");
+  }
   PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
   std::ifstream stream(sidecar);
+  if (!stream) throw InputError(sidecar.string() + ": cannot read");
   nlohmann::json json = nlohmann::json::parse(stream, nullptr, false);
   if (json.is_discarded() || !json.is_object()) {
     throw InputError(sidecar.string() + ": not a JSON object of physics properties");
   }
   for (const auto& [key, value] : json.items()) {
     auto number = [&, &key = key, &value = value]() {
-      if (!value.is_number())
-        throw InputError(sidecar.string() + ": '" + key + "' must be a number");
+      if (!value.is_number() || !(value.get<double>() >= 0.0) ||
+          !std::isfinite(value.get<double>())) {
+        throw InputError(sidecar.string() + ": '" + key + "' must be a non-negative number");
+      }
       return value.get<double>();
     };
     auto bits = [&, &key = key, &value = value]() {

@@ -10,15 +10,17 @@
 #include <system_error>
 
 namespace hullcook {
+namespace {
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+// Writes bytes to a new temporary file beside path (same directory, so that the rename is
+// atomic) and returns its name. Throws OutputError naming path; on failure nothing is left.
+std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes) {
   std::filesystem::path directory = path.parent_path();
   if (directory.empty()) directory = ".";
   if (!std::filesystem::is_directory(directory)) {
     throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
                       " does not exist");
   }
-  // A unique name in the same directory, so that the final rename is atomic.
   std::random_device entropy;
   std::filesystem::path temporary =
       directory / ("." + path.filename().string() + ".tmp" + std::to_string(entropy()));
@@ -33,11 +35,46 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
     std::remove(temporary.c_str());
     throw OutputError(path.string() + ": cannot write: " + std::strerror(write_errno));
   }
+  return temporary;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  write_files_atomically({{path, std::string(bytes)}});
+}
+
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+  std::vector<std::filesystem::path> temporaries;
+  auto remove_temporaries = [&](std::size_t from) {
+    for (std::size_t k = from; k < temporaries.size(); ++k) std::remove(temporaries[k].c_str());
+  };
+  try {
+    for (const auto& [path, bytes] : files) temporaries.push_back(write_temporary(path, bytes));
+  } catch (...) {
+    remove_temporaries(0);
+    throw;
+  }
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    std::error_code error;
+    std::filesystem::rename(temporaries[k], files[k].first, error);
+    if (error) {
+      remove_temporaries(k);
+      throw OutputError(files[k].first.string() + ": cannot write: " + error.message());
+    }
+  }
+}
+
+void check_not_an_input(const std::filesystem::path& output,
+                        const std::vector<std::filesystem::path>& inputs) {
   std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::remove(temporary.c_str());
-    throw OutputError(path.string() + ": cannot write: " + error.message());
+  if (!std::filesystem::exists(output, error)) return;
+  for (const std::filesystem::path& input : inputs) {
+    if (std::filesystem::equivalent(output, input, error)) {
+      throw UsageError(output.string() + ": this output would replace an input (" + input.string() +
+                       "); write it elsewhere");
+    }
   }
 }
 

@@ -17,10 +17,12 @@ Tolerance Tolerance::parse(const std::string& text) {
   }
   char* end = nullptr;
   double value = number.empty() ? NAN : std::strtod(number.c_str(), &end);
-  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value) ||
-      value < 0) {
+  // The bound keeps every tolerance, scaled to output units, within what the formats store.
+  constexpr double kLargest = 1e9;
+  if (number.empty() || end != number.c_str() + number.size() || !(value >= 0.0) ||
+      !(value <= kLargest)) {
     throw UsageError("'" + text +
-                     "' is not a tolerance: expected a non-negative number (input units) or a "
+                     "' is not a tolerance: expected a number from 0 to 1e9 (input units) or a "
                      "percentage of the enclosing radius, e.g. 0.5 or 1%");
   }
   return relative ? Tolerance{value / 100.0, true} : Tolerance{value, false};

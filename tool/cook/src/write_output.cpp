@@ -5,23 +5,80 @@
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
+#include <system_error>
+
 namespace hullcook {
+namespace {
+
+enum class OutputFormat { json, bundle, gltf, glb };
+
+OutputFormat output_format(const std::filesystem::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".json") return OutputFormat::json;
+  if (extension == ".hcb") return OutputFormat::bundle;
+  if (extension == ".gltf") return OutputFormat::gltf;
+  if (extension == ".glb") return OutputFormat::glb;
+  throw UsageError(path.string() + ": unknown output format '" + extension +
+                   "'; use .hcb, .gltf, .glb or .json");
+}
+
+std::string output_bytes(const CookResult& result, const std::filesystem::path& path,
+                         const Settings& settings) {
+  switch (output_format(path)) {
+    case OutputFormat::json:
+      return debug_json(result.assets);
+    case OutputFormat::bundle:
+      return write_bundle(result.assets);
+    case OutputFormat::gltf:
+    case OutputFormat::glb:
+      return write_gltf(result.assets,
+                        GltfOptions{output_format(path) == OutputFormat::glb, settings.draco});
+  }
+  return {};
+}
+
+}  // namespace
+
+void check_output_path(const std::filesystem::path& path) {
+  output_format(path);
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw OutputError(path.string() + ": cannot write: it is a directory");
+  }
+  std::filesystem::path directory = path.parent_path();
+  if (directory.empty()) directory = ".";
+  if (!std::filesystem::is_directory(directory, error)) {
+    throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
+                      " does not exist");
+  }
+}
+
+std::vector<std::filesystem::path> files_read(const CookResult& result) {
+  std::vector<std::filesystem::path> files;
+  for (const CookedAsset& asset : result.assets) {
+    files.emplace_back(asset.source);
+    std::filesystem::path sidecar = asset.source;
+    sidecar.replace_extension(".physics.json");
+    std::error_code error;
+    if (std::filesystem::exists(sidecar, error)) files.push_back(sidecar);
+  }
+  return files;
+}
 
 void write_output(const CookResult& result, const std::filesystem::path& path,
                   const Settings& settings) {
-  std::string extension = path.extension().string();
-  std::string bytes;
-  if (extension == ".json") {
-    bytes = debug_json(result.assets);
-  } else if (extension == ".hcb") {
-    bytes = write_bundle(result.assets);
-  } else if (extension == ".gltf" || extension == ".glb") {
-    bytes = write_gltf(result.assets, GltfOptions{extension == ".glb", settings.draco});
-  } else {
-    throw UsageError(path.string() + ": unknown output format '" + extension +
-                     "'; use .hcb, .gltf, .glb or .json");
+  write_outputs(result, {path}, settings);
+}
+
+void write_outputs(const CookResult& result, const std::vector<std::filesystem::path>& paths,
+                   const Settings& settings) {
+  const std::vector<std::filesystem::path> inputs = files_read(result);
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  for (const std::filesystem::path& path : paths) {
+    check_not_an_input(path, inputs);
+    files.emplace_back(path, output_bytes(result, path, settings));
   }
-  write_file_atomically(path, bytes);
+  write_files_atomically(files);
 }
 
 }  // namespace hullcook

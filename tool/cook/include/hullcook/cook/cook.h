@@ -19,7 +19,8 @@ struct Tolerance {
   double value = 2.0;
   bool relative = false;  // value is a fraction of R (0.01 for "1%")
 
-  // Parses "0.5", "2px" or "1%". Throws UsageError on anything else or a negative value.
+  // Parses "0.5", "2px" or "1%". Throws UsageError on anything else, or a value below 0 or
+  // above 1e9.
   static Tolerance parse(const std::string& text);
   double resolve(double enclosing_radius) const {
     return relative ? value * enclosing_radius : value;
@@ -70,9 +71,22 @@ struct CookResult {
 // Throws InputError naming the file and the problem; nothing is written.
 CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings);
 
+// Checks before cooking what write_output would refuse about path alone: an unknown extension
+// (UsageError), a directory or a missing directory (OutputError).
+void check_output_path(const std::filesystem::path& path);
+
+// The files a cook read: every asset's source, and its physics sidecar where there is one.
+std::vector<std::filesystem::path> files_read(const CookResult& result);
+
 // Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json).
-// Writes to a temporary file and renames it; throws OutputError or UsageError.
+// Writes to a temporary file and renames it; throws OutputError, or UsageError for an unknown
+// extension or a path that is one of files_read(result).
 void write_output(const CookResult& result, const std::filesystem::path& path,
                   const Settings& settings);
+
+// write_output to every path as one output: if any cannot be written, none is (see
+// write_files_atomically).
+void write_outputs(const CookResult& result, const std::vector<std::filesystem::path>& paths,
+                   const Settings& settings);
 
 }  // namespace hullcook

@@ -1,13 +1,27 @@
-// Writing outputs without ever leaving a partial file behind.
+// Writing outputs without ever leaving a partial file behind, and never over an input.
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace hullcook {
 
 // Writes bytes to a temporary file beside path, then renames it over path.
 // Throws OutputError naming the file and the reason; on failure nothing is left behind.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Writes several files as one output: every file is written to its temporary first, and the
+// renames follow only once all are written, so a file that cannot be written leaves none of them
+// (only a rename failing after earlier ones succeeded could leave those). Throws OutputError.
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+// Throws UsageError naming both if output is an existing file among inputs (the same file by
+// any path or link): a command never overwrites what it reads.
+void check_not_an_input(const std::filesystem::path& output,
+                        const std::vector<std::filesystem::path>& inputs);
 
 }  // namespace hullcook
