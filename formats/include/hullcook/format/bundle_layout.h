@@ -215,9 +215,41 @@ inline bool hull_is_strictly_convex(const unsigned char* vertices, std::uint32_t
   return x_sign_changes <= 2 && y_sign_changes <= 2;
 }
 
-// The slot count a writer uses for asset_count assets: load factor <= 0.75, one slot always empty.
+// The slot count a writer starts from for asset_count assets: load factor <= 0.75, one slot always
+// empty; more only if the table would exceed name_table_probe_budget.
 inline constexpr std::uint32_t writer_slot_count(std::uint32_t asset_count) noexcept {
   return asset_count + asset_count / 3 + 1;
+}
+
+// The name table's probe budget (SPEC §6). A crafted table whose names all hash to one slot is
+// otherwise valid but makes every lookup walk one long cluster, so validating it takes quadratic
+// time; readers therefore reject tables costing more than this, and writers stay under it. A
+// random table at the writers' load factor (<= 0.75) costs about 7.5 per slot.
+inline constexpr std::uint64_t kNameTableProbesPerSlot = 16;
+
+inline constexpr std::uint64_t name_table_probe_budget(std::uint32_t slot_count) noexcept {
+  return kNameTableProbesPerSlot * slot_count;
+}
+
+// A name table's probe cost (SPEC §6): the occupied slots probed by looking up, once from every
+// slot, a name the bundle lacks, i.e. the sum of L (L + 1) / 2 over the cyclic runs of L occupied
+// slots. It also bounds the probes of finding every asset by its name (each asset sits within
+// its home slot's run), which is why one number suffices for validation and for Bundle::find.
+// slot_at(s) returns slot s's content; the cost is UINT64_MAX when no slot is empty (lookups of
+// absent names would never end). Allocation-free, linear in slot_count.
+template <typename SlotAt>
+std::uint64_t name_table_probe_cost(std::uint32_t slot_count, SlotAt&& slot_at) noexcept {
+  std::uint32_t empty = 0;
+  while (empty < slot_count && slot_at(empty) != kEmptySlot) ++empty;
+  if (empty == slot_count) return std::numeric_limits<std::uint64_t>::max();
+  // Start after an empty slot so that the run wrapping past the last slot is counted whole.
+  std::uint64_t cost = 0, run = 0;
+  for (std::uint64_t i = 1; i <= slot_count; ++i) {
+    const std::uint64_t slot = (empty + i) % slot_count;
+    run = slot_at(static_cast<std::uint32_t>(slot)) == kEmptySlot ? 0 : run + 1;
+    cost += run;
+  }
+  return cost;
 }
 
 // The quantization error bound E of an asset (SPEC §9) [output units]: 1 % of the finest τ or
