@@ -200,6 +200,13 @@ Status validate_name_table(const unsigned char* bytes, const BundleHeader& heade
     ++occupied;
   }
   if (occupied != header.asset_count) return Status::malformed;
+  // Also bounds the probes of the lookups below (and of Bundle::find), keeping them linear.
+  const auto slot_at = [slots](std::uint32_t slot) {
+    return load<std::uint32_t>(slots + 4u * slot);
+  };
+  if (format::name_table_probe_cost(header.slot_count, slot_at) >
+      format::name_table_probe_budget(header.slot_count))
+    return Status::malformed;
   // With exactly asset_count occupied slots, finding every asset by its own name proves that
   // each index appears once, is reachable, and that names are unique.
   const auto* strings = reinterpret_cast<const char*>(bytes + header.strings_offset);

@@ -2,15 +2,19 @@
 #include "synthetic_assets.h"
 
 #include "hullcook/cook/bundle_writer.h"
+#include "hullcook/format/bundle_layout.h"
+#include "hullcook/format/crc32.h"
 #include "hullcook/runtime.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace hullcook {
 namespace {
@@ -107,6 +111,104 @@ TEST(Runtime, EmptyViewsAreHarmless) {
   EXPECT_STREQ(asset.measure(), "");
   EXPECT_EQ(runtime::Level{}.hull(0).vertex_count(), 0u);
   EXPECT_GT(std::string(hullcook::runtime_version()).size(), 0u);
+}
+
+// Distinct names whose FNV-1a hash is a multiple of modulus: they all start at slot 0 of a table
+// of modulus slots (or of any divisor of it).
+std::vector<std::string> names_hashing_to_slot_zero(std::size_t count, std::uint32_t modulus) {
+  std::vector<std::string> names;
+  for (int i = 0; names.size() < count; ++i) {
+    std::string name = "clash_" + std::to_string(i);
+    if (format::name_hash(name.data(), name.size()) % modulus == 0) names.push_back(name);
+  }
+  return names;
+}
+
+// A bundle of assets with one empty level each, laid out by hand because write_bundle chooses
+// its own slot count; the slots are filled by linear probing in the names' order.
+std::string bundle_with_slot_count(const std::vector<std::string>& names,
+                                   std::uint32_t slot_count) {
+  const auto count = static_cast<std::uint32_t>(names.size());
+  format::BundleHeader header{};
+  std::memcpy(header.magic, format::kMagic, sizeof(header.magic));
+  header.version_major = format::kVersionMajor;
+  header.version_minor = format::kVersionMinor;
+  header.asset_count = count;
+  header.slot_count = slot_count;
+  header.level_count = count;
+  header.assets_offset = sizeof(format::BundleHeader);
+  header.slots_offset = header.assets_offset + count * sizeof(format::AssetRecord);
+  header.levels_offset = header.slots_offset + slot_count * 4;
+  header.hulls_offset = header.levels_offset + count * sizeof(format::LevelRecord);
+  header.vertices_offset = header.hulls_offset;
+  header.strings_offset = header.vertices_offset;
+
+  std::string bytes(header.strings_offset, '\0');
+  std::string strings;
+  std::vector<std::uint32_t> slots(slot_count, format::kEmptySlot);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    format::AssetRecord asset{};
+    asset.name_offset = static_cast<std::uint32_t>(strings.size());
+    asset.name_length = static_cast<std::uint16_t>(names[i].size());
+    asset.first_level = i;
+    asset.pixels_per_unit = 1.0f;
+    asset.pivot_u = asset.pivot_v = 0.5f;
+    asset.quant_step = 0.01f;
+    std::memcpy(bytes.data() + header.assets_offset + i * sizeof(asset), &asset, sizeof(asset));
+    const format::LevelRecord level{0.0f, 0};
+    std::memcpy(bytes.data() + header.levels_offset + i * sizeof(level), &level, sizeof(level));
+    strings += names[i] + '\0';
+    std::uint32_t slot = format::name_hash(names[i].data(), names[i].size()) % slot_count;
+    while (slots[slot] != format::kEmptySlot) slot = (slot + 1) % slot_count;
+    slots[slot] = i;
+  }
+  std::memcpy(bytes.data() + header.slots_offset, slots.data(), slots.size() * 4);
+  bytes += strings;
+  header.total_size = static_cast<std::uint32_t>(bytes.size());
+  header.checksum = format::crc32(0, bytes.data() + sizeof(header), bytes.size() - sizeof(header));
+  std::memcpy(bytes.data(), &header, sizeof(header));
+  return bytes;
+}
+
+void expect_finds_every_name(const std::string& bytes, const std::vector<std::string>& names) {
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(bundle.find(names[i]).index(), i);
+  EXPECT_FALSE(bundle.find("absent"));
+}
+
+// The shape of a crafted bundle that took quadratic time to open: every name starts at slot 0,
+// so the table is one run and finding the k-th asset probes k slots.
+TEST(Runtime, RejectsAClusteredNameTable) {
+  const std::vector<std::string> clashing = names_hashing_to_slot_zero(1023, 1024);
+  Bundle bundle;
+  std::string bytes = bundle_with_slot_count(clashing, 1024);
+  EXPECT_EQ(bundle.open(bytes.data(), bytes.size()), Status::malformed);
+  EXPECT_TRUE(bundle.empty());
+  // Twice the slots: two runs of about 512, still far over the budget.
+  bytes = bundle_with_slot_count(clashing, 2048);
+  EXPECT_EQ(bundle.open(bytes.data(), bytes.size()), Status::malformed);
+
+  // The same layout with ordinary names is valid: only the clustering is refused.
+  std::vector<std::string> ordinary;
+  for (int i = 0; i < 1023; ++i) ordinary.push_back("sprites/enemy_" + std::to_string(i) + ".png");
+  expect_finds_every_name(bundle_with_slot_count(ordinary, 2048), ordinary);
+}
+
+TEST(Runtime, AcceptsANameTableUpToItsProbeBudget) {
+  // One run of `length` assets starting at slot 0 costs length (length + 1) / 2 (SPEC §6).
+  constexpr std::uint32_t kSlots = 64;
+  const std::uint64_t budget = format::name_table_probe_budget(kSlots);
+  std::uint32_t length = 0;
+  while (std::uint64_t{length + 1} * (length + 2) / 2 <= budget) ++length;
+  ASSERT_LT(length + 1, kSlots);
+  const std::vector<std::string> names = names_hashing_to_slot_zero(length + 1, kSlots);
+
+  const std::vector<std::string> within(names.begin(), names.end() - 1);
+  expect_finds_every_name(bundle_with_slot_count(within, kSlots), within);
+  Bundle bundle;
+  const std::string over = bundle_with_slot_count(names, kSlots);
+  EXPECT_EQ(bundle.open(over.data(), over.size()), Status::malformed);
 }
 
 TEST(MappedFile, MapsAFileForBundleOpen) {
