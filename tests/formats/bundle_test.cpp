@@ -290,6 +290,44 @@ TEST(Bundle, WriterRefusesWhatItCannotStore) {
   EXPECT_FALSE(bundle.find("a").valid());
 }
 
+// ---- Name table -------------------------------------------------------------------------------
+
+TEST(NameTable, ProbeCostSumsTheCyclicRunsOfOccupiedSlots) {
+  constexpr std::uint32_t kE = format::kEmptySlot;
+  const auto cost = [](std::vector<std::uint32_t> slots) {
+    return format::name_table_probe_cost(static_cast<std::uint32_t>(slots.size()),
+                                         [&](std::uint32_t s) { return slots[s]; });
+  };
+  EXPECT_EQ(cost({kE}), 0u);
+  EXPECT_EQ(cost({0, kE, 1, 2}), 6u);  // one run of 3 wrapping past the last slot
+  EXPECT_EQ(cost({kE, 0, 1, kE, 2}), 3u + 1u);
+  EXPECT_EQ(cost({0, 1}), std::numeric_limits<std::uint64_t>::max());  // lookups never end
+}
+
+TEST(Bundle, WriterGrowsAClusteredNameTableToMeetTheProbeBudget) {
+  // Names that all start at slot 0 of the writer's usual table.
+  constexpr std::uint32_t kCount = 255;
+  const std::uint32_t usual = format::writer_slot_count(kCount);
+  std::vector<CookedAsset> assets;
+  for (int i = 0; assets.size() < kCount; ++i) {
+    const std::string name = "clash_" + std::to_string(i);
+    if (format::name_hash(name.data(), name.size()) % usual == 0)
+      assets.push_back(test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}}));
+  }
+  const std::string bytes = write_bundle(assets);
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  const auto header = format::load<format::BundleHeader>(data);
+  EXPECT_GT(header.slot_count, usual);
+  const auto slot_at = [&](std::uint32_t s) {
+    return format::load<std::uint32_t>(data + header.slots_offset + 4u * s);
+  };
+  EXPECT_LE(format::name_table_probe_cost(header.slot_count, slot_at),
+            format::name_table_probe_budget(header.slot_count));
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  for (std::size_t i = 0; i < assets.size(); ++i) EXPECT_EQ(bundle.find(assets[i].name).index(), i);
+}
+
 // ---- Golden files -----------------------------------------------------------------------------
 
 TEST(Golden, WriterReproducesTheCurrentVersionByteForByte) {
@@ -345,6 +383,8 @@ TEST(Golden, ReaderAcceptsEveryGoldenFileOfEverySupportedVersion) {
                           std::to_string(bundle.version_minor()))
         << entry.path();
     EXPECT_GT(bundle.asset_count(), 0u);
+    for (std::size_t i = 0; i < bundle.asset_count(); ++i)
+      EXPECT_EQ(bundle.find(bundle.asset(i).name()).index(), i) << entry.path();
     test::touch_everything(bundle);
   }
   EXPECT_GE(files, 1u);

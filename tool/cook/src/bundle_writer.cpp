@@ -210,6 +210,31 @@ std::uint32_t to_u32(std::size_t value) {
   return static_cast<std::uint32_t>(value);
 }
 
+// The name table (SPEC §6), linear probing at the writers' load factor. Names that cluster
+// beyond the readers' probe budget (practically only crafted ones) get more slots; names sharing
+// their whole 32-bit hash cluster at any slot count, so growth stops at a sane table size.
+std::vector<std::uint32_t> name_table(const std::vector<CookedAsset>& assets) {
+  const std::uint32_t asset_count = to_u32(assets.size());
+  const std::uint64_t max_slot_count = std::min<std::uint64_t>(
+      64 * std::uint64_t{asset_count} + 64, std::numeric_limits<std::uint32_t>::max());
+  for (std::uint64_t slot_count = format::writer_slot_count(asset_count);
+       slot_count <= max_slot_count; slot_count += slot_count / 2 + 1) {
+    std::vector<std::uint32_t> slots(slot_count, format::kEmptySlot);
+    for (std::size_t i = 0; i < assets.size(); ++i) {
+      std::uint64_t slot =
+          format::name_hash(assets[i].name.data(), assets[i].name.size()) % slot_count;
+      while (slots[slot] != format::kEmptySlot) slot = (slot + 1) % slot_count;
+      slots[slot] = static_cast<std::uint32_t>(i);
+    }
+    const auto slot_at = [&slots](std::uint32_t slot) { return slots[slot]; };
+    if (format::name_table_probe_cost(static_cast<std::uint32_t>(slot_count), slot_at) <=
+        format::name_table_probe_budget(static_cast<std::uint32_t>(slot_count)))
+      return slots;
+  }
+  throw OutputError(
+      "bundle: too many asset names share their FNV-1a hash for the name table; rename some");
+}
+
 }  // namespace
 
 std::string write_bundle(const std::vector<CookedAsset>& assets) {
@@ -240,7 +265,8 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
   header.version_minor = format::kVersionMinor;
   header.flags = any_physics ? format::kBundleHasPhysics : 0;
   header.asset_count = to_u32(assets.size());
-  header.slot_count = format::writer_slot_count(header.asset_count);
+  const std::vector<std::uint32_t> slots = name_table(assets);
+  header.slot_count = to_u32(slots.size());
   header.level_count = to_u32(level_count);
   header.hull_count = to_u32(hull_count);
   header.vertex_count = to_u32(vertex_count);
@@ -260,7 +286,6 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
   header.total_size = to_u32(end);
 
   std::string bytes(end, '\0');
-  std::vector<std::uint32_t> slots(header.slot_count, format::kEmptySlot);
   std::uint32_t level_index = 0, hull_index = 0, vertex_index = 0, name_offset = 0;
   for (std::size_t i = 0; i < assets.size(); ++i) {
     const CookedAsset& asset = assets[i];
@@ -290,11 +315,6 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
       physics.flags = asset.physics->sensor ? format::kPhysicsSensor : 0;
       put(bytes, header.physics_offset + i * sizeof(PhysicsRecord), physics);
     }
-
-    std::uint32_t slot =
-        format::name_hash(asset.name.data(), asset.name.size()) % header.slot_count;
-    while (slots[slot] != format::kEmptySlot) slot = (slot + 1) % header.slot_count;
-    slots[slot] = static_cast<std::uint32_t>(i);
 
     for (std::size_t l = 0; l < quantized[i].levels.size(); ++l) {
       const LevelRecord level{static_cast<float>(asset_levels[i][l].tau), hull_index};

@@ -21,7 +21,8 @@ namespace hullcook {
 // Throws OutputError naming the asset and the problem when it cannot be stored: an empty,
 // duplicate or over-long (> 65535 bytes) name, an image side > 65535 px, a non-positive
 // pixels-per-unit, unordered or negative τ, a hull with fewer than 3 vertices or non-finite
-// coordinates, or a hull too large for 16-bit deltas at precision E.
+// coordinates, a hull too large for 16-bit deltas at precision E, or names so many of which share
+// their 32-bit hash that no sane name table meets the readers' probe budget (SPEC §6).
 std::string write_bundle(const std::vector<CookedAsset>& assets);
 
 }  // namespace hullcook
