@@ -3,10 +3,14 @@
 #include "hullcook/core/clean.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -15,6 +19,7 @@ namespace {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / ("hullcook_core_" + name);
@@ -116,6 +121,183 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("tag.poly", "1\n3 up\n0 0\n1 0\n1 1\n1 2 3\n"), HasSubstr("'out' or 'in'"));
   EXPECT_THAT(error_of("empty.poly", "# nothing\n"), HasSubstr("empty.poly"));
   EXPECT_THAT(error_of("missing.poly/nope", ""), HasSubstr("missing.poly"));
+}
+
+// The crossing check on zigzags of long diagonal teeth, where each edge's box covers a large part
+// of the grid (it once entered every edge in every cell of its box, and took cubic time). The
+// expected answer is found by testing every pair: the first edge in ring order that meets a
+// non-adjacent edge, and the first edge it meets.
+
+// n teeth of height `height` leaning by `lean`, d apart, closed below: long parallel diagonals.
+Ring zigzag(int teeth, double d, double lean, double height) {
+  Ring ring;
+  for (int k = 0; k < teeth; ++k) {
+    ring.push_back({k * d, 0.0});
+    ring.push_back({k * d + lean, height});
+  }
+  const double right = teeth * d + lean + 1.0;
+  ring.push_back({right, height});
+  ring.push_back({right, -1.0});
+  ring.push_back({0.0, -1.0});             // not on the first tooth's line
+  std::reverse(ring.begin(), ring.end());  // counter-clockwise, as validation leaves it
+  return ring;
+}
+
+void move_vertex(Ring& ring, Vec2 from, Vec2 to) {
+  const auto at = std::find(ring.begin(), ring.end(), from);
+  ASSERT_NE(at, ring.end());
+  *at = to;
+}
+
+std::string point_text(Vec2 p) {
+  char buffer[80];
+  std::snprintf(buffer, sizeof buffer, "(%.9g, %.9g)", p.x, p.y);
+  return buffer;
+}
+
+// The message's "(edge ... meets edge ...)" for the first crossing of every pair, or "" when the
+// cleaned ring has none.
+std::string crossing_by_every_pair(const Ring& input) {
+  Ring ring = remove_degenerate_vertices(input);
+  if (signed_area(ring) < 0.0) std::reverse(ring.begin(), ring.end());
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent across the seam
+      const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[j], d = ring[(j + 1) % n];
+      if (segments_intersect(a, b, c, d)) {
+        return "(edge " + point_text(a) + "-" + point_text(b) + " meets edge " + point_text(c) +
+               "-" + point_text(d) + ")";
+      }
+    }
+  }
+  return "";
+}
+
+std::string validation_error(const Ring& ring) {
+  try {
+    clean_and_validate({Region{ring, {}}}, "zig.poly");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CrossingCheck, ValidZigzagOfLongDiagonalTeethValidatesUnchanged) {
+  const Ring ring = zigzag(400, 2.5, 1000.0, 1000.0);
+  const auto regions = clean_and_validate({Region{ring, {}}}, "zig.poly");
+  EXPECT_EQ(regions[0].outer, ring);
+}
+
+TEST(CrossingCheck, ZigzagWithOneCrossingIsRefusedNamingTheTwoEdges) {
+  Ring ring = zigzag(400, 2.5, 1000.0, 1000.0);
+  // Tooth 200's tip moves past tooth 199's: both its edges cross that tooth's rising edge, far
+  // from any vertex.
+  move_vertex(ring, {1500.0, 1000.0}, {1496.0, 1000.0});
+  const std::string expected = crossing_by_every_pair(ring);
+  EXPECT_EQ(expected, "(edge (502.5, 0)-(1496, 1000) meets edge (500, 0)-(1497.5, 1000))");
+  EXPECT_THAT(validation_error(ring),
+              AllOf(HasSubstr("zig.poly"), HasSubstr("region 1 outer boundary: self-intersection"),
+                    HasSubstr(expected)));
+}
+
+// A zigzag of `teeth` 45-degree teeth whose grid cells (floor(sqrt(edges)) a side over the
+// vertices' box) have integer sides, so that lattice points can sit on cell boundaries and on the
+// teeth's edges at once. Needs floor(sqrt(2 teeth + 3)) to divide 2 teeth.
+struct AlignedZigzag {
+  Ring ring;
+  int side;
+  double cell_width, cell_height;
+};
+AlignedZigzag aligned_zigzag(int teeth, int cell_height) {
+  const int side = static_cast<int>(std::sqrt(2.0 * teeth + 3.0));
+  const double height = side * cell_height - 1.0;
+  AlignedZigzag z{zigzag(teeth, 2.0, height, height), side, 0.0, double(cell_height)};
+  z.cell_width = (2.0 * teeth + height + 1.0) / side;
+  return z;
+}
+
+// Touching at a vertex, touching inside an edge, and collinear overlap, with the meeting points
+// on cell boundaries and corners.
+TEST(CrossingCheck, TouchingAndCollinearOverlapsOnCellBoundariesAreRefused) {
+  const AlignedZigzag z = aligned_zigzag(36, 16);  // 8 cells a side, 25 by 16
+  ASSERT_EQ(z.side, 8);
+  ASSERT_EQ(z.cell_width, 25.0);
+  ASSERT_EQ(crossing_by_every_pair(z.ring), "");
+  EXPECT_EQ(validation_error(z.ring), "");
+  // Tooth k rises from its valley (2k, 0) to its tip (2k + 127, 127); x = 25i and y = 16j - 1
+  // are cell boundaries, and (25, 15) is a cell corner on tooth 5's rising edge.
+  auto moved = [&](Vec2 from, Vec2 to) {
+    Ring ring = z.ring;
+    move_vertex(ring, from, to);
+    return ring;
+  };
+  struct Case {
+    const char* what;
+    Ring ring;
+  };
+  const Case cases[] = {
+      {"tip on a tooth's edge at a cell corner", moved({133.0, 127.0}, {25.0, 15.0})},
+      {"valley on a tooth's edge at a cell corner", moved({20.0, 0.0}, {25.0, 15.0})},
+      {"vertex on a vertex", moved({40.0, 0.0}, {50.0, 0.0})},
+      {"tip on the bottom edge at a cell boundary", moved({137.0, 127.0}, {100.0, -1.0})},
+      // Edges 1 and 5 overlap along x = 5, the boundary between the grid's 2 columns; edge 4
+      // ends on edge 1.
+      {"collinear overlap along a cell boundary",
+       {{0, 0}, {5, 0}, {5, 4}, {10, 4}, {10, 1}, {5, 1}, {5, 3}, {0, 5}}},
+  };
+  for (const Case& c : cases) {
+    const std::string expected = crossing_by_every_pair(c.ring);
+    EXPECT_THAT(expected, HasSubstr("meets edge")) << c.what;
+    EXPECT_THAT(validation_error(c.ring),
+                AllOf(HasSubstr("region 1 outer boundary: self-intersection"), HasSubstr(expected)))
+        << c.what;
+  }
+}
+
+// Many aligned zigzags with one vertex moved to a lattice point on another edge, on a cell
+// corner, or anywhere: the check names the same crossing as testing every pair, and accepts
+// exactly when every pair does.
+TEST(CrossingCheck, AgreesWithEveryPairOnLatticeZigzags) {
+  unsigned state = 12345;
+  auto next = [&](int bound) {
+    state = state * 1103515245u + 12345u;
+    return static_cast<int>((state >> 8) % static_cast<unsigned>(bound));
+  };
+  int refused = 0, accepted = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    int teeth = 20 + next(60);
+    while ((2 * teeth) % static_cast<int>(std::sqrt(2.0 * teeth + 3.0)) != 0) ++teeth;
+    const AlignedZigzag z = aligned_zigzag(teeth, 1 + next(12));
+    Ring ring = z.ring;
+    const double height = z.cell_height * z.side - 1.0;
+    const std::size_t moved = static_cast<std::size_t>(next(static_cast<int>(ring.size())));
+    switch (next(3)) {
+      case 0: {  // onto a point of a tooth's rising edge
+        const double m = next(static_cast<int>(height) + 1);
+        ring[moved] = {2.0 * next(teeth) + m, m};
+        break;
+      }
+      case 1:  // onto a cell corner
+        ring[moved] = {z.cell_width * next(z.side + 1), -1.0 + z.cell_height * next(z.side + 1)};
+        break;
+      default:
+        ring[moved] = {1.0 * next(static_cast<int>(z.cell_width * z.side) + 1),
+                       -1.0 + next(static_cast<int>(height) + 2)};
+    }
+    if (remove_degenerate_vertices(ring).size() < 3) continue;
+    const std::string expected = crossing_by_every_pair(ring);
+    const std::string error = validation_error(ring);
+    if (expected.empty()) {
+      ++accepted;
+      EXPECT_THAT(error, Not(HasSubstr("meets edge"))) << trial;
+    } else {
+      ++refused;
+      EXPECT_THAT(error, HasSubstr(expected)) << trial;
+    }
+  }
+  EXPECT_GT(refused, 200);
+  EXPECT_GT(accepted, 10);
 }
 
 }  // namespace

@@ -73,64 +73,124 @@ bool adjacent(const Edge& e, const Edge& f, const std::vector<std::size_t>& ring
   return (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
 }
 
-// The first intersecting pair of non-adjacent edges, found through a uniform grid; each pair is
-// tested only in the cell holding the lower corner of the overlap of their boxes.
-std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
-                                      const std::vector<std::size_t>& ring_sizes) {
-  double min_x = edges[0].a.x, max_x = min_x, min_y = edges[0].a.y, max_y = min_y;
-  for (const Edge& e : edges) {
-    min_x = std::min(min_x, e.a.x);
-    max_x = std::max(max_x, e.a.x);
-    min_y = std::min(min_y, e.a.y);
-    max_y = std::max(max_y, e.a.y);
-  }
-  const std::size_t side =
-      std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(double(edges.size()))), 1, 1024);
-  const double width = std::max(max_x - min_x, 1e-300);
-  const double height = std::max(max_y - min_y, 1e-300);
-  auto cell_x = [&](double x) {
-    const double t = (x - min_x) / width * double(side);
-    return std::min<std::size_t>(side - 1, static_cast<std::size_t>(std::max(0.0, t)));
-  };
-  auto cell_y = [&](double y) {
-    const double t = (y - min_y) / height * double(side);
-    return std::min<std::size_t>(side - 1, static_cast<std::size_t>(std::max(0.0, t)));
-  };
-  std::vector<std::vector<std::size_t>> cells(side * side);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const Edge& e = edges[i];
-    const std::size_t x0 = cell_x(std::min(e.a.x, e.b.x)), x1 = cell_x(std::max(e.a.x, e.b.x));
-    const std::size_t y0 = cell_y(std::min(e.a.y, e.b.y)), y1 = cell_y(std::max(e.a.y, e.b.y));
-    for (std::size_t y = y0; y <= y1; ++y) {
-      for (std::size_t x = x0; x <= x1; ++x) cells[y * side + x].push_back(i);
+// A uniform grid over the edges in which each edge is entered in the cells its segment passes
+// through, not in every cell of its box: a zigzag of long diagonal teeth put about every edge in
+// every cell of its box, and validation became cubic.
+class EdgeGrid {
+ public:
+  explicit EdgeGrid(const std::vector<Edge>& edges) {
+    double min_x = edges[0].a.x, max_x = min_x, min_y = edges[0].a.y, max_y = min_y;
+    for (const Edge& e : edges) {
+      min_x = std::min(min_x, e.a.x);
+      max_x = std::max(max_x, e.a.x);
+      min_y = std::min(min_y, e.a.y);
+      max_y = std::max(max_y, e.a.y);
+    }
+    side_ = static_cast<int>(std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::sqrt(double(edges.size()))), 1, 1024));
+    x_ = Axis(min_x, max_x, side_);
+    y_ = Axis(min_y, max_y, side_);
+    start_.assign(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_) + 1, 0);
+    for (const Edge& e : edges) for_each_cell(e, [&](std::size_t cell) { ++start_[cell + 1]; });
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    entries_.resize(start_.back());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      for_each_cell(edges[i], [&](std::size_t cell) { entries_[fill[cell]++] = i; });
     }
   }
-  std::optional<Crossing> best;
-  auto better = [&](const Edge& e) {
-    if (!best) return true;
-    return std::pair(e.ring, e.index) < std::pair(best->first->ring, best->first->index);
-  };
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    const auto& cell = cells[c];
-    const std::size_t cx = c % side, cy = c / side;
-    for (std::size_t i = 0; i < cell.size(); ++i) {
-      const Edge& e = edges[cell[i]];
-      for (std::size_t j = i + 1; j < cell.size(); ++j) {
-        const Edge& f = edges[cell[j]];
-        const double low_x = std::max(std::min(e.a.x, e.b.x), std::min(f.a.x, f.b.x));
-        const double low_y = std::max(std::min(e.a.y, e.b.y), std::min(f.a.y, f.b.y));
-        if (low_x > std::min(std::max(e.a.x, e.b.x), std::max(f.a.x, f.b.x))) continue;
-        if (low_y > std::min(std::max(e.a.y, e.b.y), std::max(f.a.y, f.b.y))) continue;
-        if (cell_x(low_x) != cx || cell_y(low_y) != cy) continue;
-        if (adjacent(e, f, ring_sizes)) continue;
-        if (!segments_intersect(e.a, e.b, f.a, f.b)) continue;
-        const Edge& first = std::pair(e.ring, e.index) < std::pair(f.ring, f.index) ? e : f;
-        const Edge& second = &first == &e ? f : e;
-        if (better(first)) best = Crossing{&first, &second};
+
+  // Calls visit(cell) for each cell that the segment of e passes through or comes within
+  // kMargin cells of. The cell coordinates of the end points are exact to about 1e-12 cells
+  // (a few roundings of numbers at most side_ <= 1024), and so is each row's span of the
+  // segment: the margin, a thousand times that, makes the cells a superset of those the exact
+  // segment meets, so two edges that meet share the cell of their meeting point. The same cell
+  // coordinates serve both edges, so no rounding of the vertices' cells can separate them.
+  template <typename Visit>
+  void for_each_cell(const Edge& e, Visit&& visit) const {
+    double ax = x_.cell_coordinate(e.a.x), ay = y_.cell_coordinate(e.a.y);
+    double bx = x_.cell_coordinate(e.b.x), by = y_.cell_coordinate(e.b.y);
+    if (ay > by) std::swap(ax, bx), std::swap(ay, by);
+    const int row0 = index(ay - kMargin), row1 = index(by + kMargin);
+    for (int row = row0; row <= row1; ++row) {
+      double low = std::min(ax, bx), high = std::max(ax, bx);
+      if (by > ay) {
+        auto x_at = [&](double y) {
+          return ax + std::clamp((y - ay) / (by - ay), 0.0, 1.0) * (bx - ax);
+        };
+        const double u = x_at(row - kMargin), w = x_at(row + 1 + kMargin);
+        low = std::min(u, w), high = std::max(u, w);
+      }
+      const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(side_);
+      for (int column = index(low - kMargin); column <= index(high + kMargin); ++column) {
+        visit(first + static_cast<std::size_t>(column));
       }
     }
   }
-  return best;
+
+  // The edges entered in a cell, in increasing order.
+  const std::size_t* begin(std::size_t cell) const { return entries_.data() + start_[cell]; }
+  const std::size_t* end(std::size_t cell) const { return entries_.data() + start_[cell + 1]; }
+
+ private:
+  static constexpr double kMargin = 1e-9;
+
+  // Maps a coordinate to [0, side] in cells.
+  struct Axis {
+    Axis() = default;
+    Axis(double low, double high, int cells) : min(low), side(cells) {
+      // Halving is exact for coordinates this large, and keeps the extent finite.
+      if (!std::isfinite(high - low)) half = 0.5;
+      extent = std::max(half * high - half * low, 1e-300);
+    }
+    double cell_coordinate(double v) const { return (half * v - half * min) / extent * side; }
+    double min = 0.0, extent = 1.0, half = 1.0;
+    int side = 1;
+  };
+
+  int index(double cell_coordinate) const {
+    if (!(cell_coordinate > 0.0)) return 0;
+    if (cell_coordinate >= side_ - 1.0) return side_ - 1;
+    return static_cast<int>(cell_coordinate);
+  }
+
+  int side_ = 1;
+  Axis x_, y_;
+  std::vector<std::size_t> start_;  // per cell, its first entry in entries_
+  std::vector<std::size_t> entries_;
+};
+
+// The first crossing in (ring, index) order: the first edge that meets a non-adjacent edge, and
+// the first edge it meets. Each pair that shares a cell is tested once.
+std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
+                                      const std::vector<std::size_t>& ring_sizes) {
+  const EdgeGrid grid(edges);
+  // tested_with[j] == i: the pair (i, j) was tested in an earlier cell of edge i.
+  std::vector<std::size_t> tested_with(edges.size(), edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Edge& e = edges[i];
+    const double e_min_x = std::min(e.a.x, e.b.x), e_max_x = std::max(e.a.x, e.b.x);
+    const double e_min_y = std::min(e.a.y, e.b.y), e_max_y = std::max(e.a.y, e.b.y);
+    std::size_t second = edges.size();
+    grid.for_each_cell(e, [&](std::size_t cell) {
+      // Entries are in increasing order: the pairs with an earlier edge were tested from it.
+      for (const std::size_t* k = std::upper_bound(grid.begin(cell), grid.end(cell), i);
+           k != grid.end(cell) && *k < second; ++k) {
+        const std::size_t j = *k;
+        if (tested_with[j] == i) continue;
+        tested_with[j] = i;
+        const Edge& f = edges[j];
+        if (std::max(f.a.x, f.b.x) < e_min_x || std::min(f.a.x, f.b.x) > e_max_x ||
+            std::max(f.a.y, f.b.y) < e_min_y || std::min(f.a.y, f.b.y) > e_max_y) {
+          continue;
+        }
+        if (adjacent(e, f, ring_sizes)) continue;
+        if (segments_intersect(e.a, e.b, f.a, f.b)) second = j;
+      }
+    });
+    if (second < edges.size()) return Crossing{&e, &edges[second]};
+  }
+  return std::nullopt;
 }
 
 struct Box {
