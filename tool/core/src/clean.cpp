@@ -74,8 +74,8 @@ bool adjacent(const Edge& e, const Edge& f, const std::vector<std::size_t>& ring
 }
 
 // A uniform grid over the edges in which each edge is entered in the cells its segment passes
-// through, not in every cell of its box: a zigzag of long diagonal teeth put about every edge in
-// every cell of its box, and validation became cubic.
+// through: entered in every cell of its box, the edges of a zigzag of long diagonal teeth nearly
+// all shared every cell, and validation was cubic.
 class EdgeGrid {
  public:
   explicit EdgeGrid(const std::vector<Edge>& edges) {
@@ -104,8 +104,9 @@ class EdgeGrid {
   // kMargin cells of. The cell coordinates of the end points are exact to about 1e-12 cells
   // (a few roundings of numbers at most side_ <= 1024), and so is each row's span of the
   // segment: the margin, a thousand times that, makes the cells a superset of those the exact
-  // segment meets, so two edges that meet share the cell of their meeting point. The same cell
-  // coordinates serve both edges, so no rounding of the vertices' cells can separate them.
+  // segment meets, so two edges that meet share the cell of their meeting point. Computed from
+  // the grid's corner in cells (unlike RegionView's widening, in input units), the bound holds
+  // however far the coordinates are from the origin.
   template <typename Visit>
   void for_each_cell(const Edge& e, Visit&& visit) const {
     double ax = x_.cell_coordinate(e.a.x), ay = y_.cell_coordinate(e.a.y);
