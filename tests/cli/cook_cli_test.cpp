@@ -212,5 +212,10 @@ TEST_F(CookCli, ReviewANoisyAlphaChannelIsRefusedBeforeDecomposing) {
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
+TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
+  // Cooked to a NaN area, the triangle was left out with a warning and the cook succeeded.
+  expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -21,6 +21,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <thread>
 
 namespace hullcook {
@@ -271,6 +272,27 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
   return physics;
 }
 
+// Areas and squared lengths of coordinates beyond this overflow or lose all precision (a 1e300
+// polygon cooked to a NaN area and no hull), and no output format stores them.
+constexpr double kLargestCoordinate = 1e15;  // [output units]
+
+void refuse_huge_coordinates(const std::vector<Region>& regions, const std::string& source) {
+  double largest = 0.0;
+  for (const Region& region : regions) {
+    auto visit = [&](const Ring& ring) {
+      for (Vec2 p : ring) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    };
+    visit(region.outer);
+    for (const Ring& hole : region.holes) visit(hole);
+  }
+  if (largest > kLargestCoordinate) {
+    std::ostringstream message;
+    message << source << ": a coordinate of " << largest
+            << " output units is too large (at most 1e15; scale the input or raise --ppu)";
+    throw InputError(message.str());
+  }
+}
+
 // Holes are resolved one at a time, each on the component holding the rest: time and memory grow
 // with the holes times the vertices (each resolution measures that component again, and the tree
 // keeps every component). A noisy alpha channel traces to thousands of pin holes and would take
@@ -322,6 +344,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
     regions.push_back(transformed(region, input.transform));
   // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
   if (!regions.empty()) regions = clean_and_validate(std::move(regions), asset.source);
+  refuse_huge_coordinates(regions, asset.source);
   refuse_too_many_holes(regions, asset.source, asset.image_width > 0);
   asset.regions = regions;
 
