@@ -113,5 +113,19 @@ TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
   }
 }
 
+// From the adversarial review of 2026-12-01: a file name that is not UTF-8 was written raw, and
+// strict JSON parsers refused the debug JSON of `cook` and of `inspect --json`.
+TEST(Inspect, ReviewNamesThatAreNotUtf8GiveValidJson) {
+  const std::string name = std::string("caf\xc3\xa9/a\xff") + "b\xe2\x82.png";
+  const fs::path bundle = write(
+      "latin1.hcb", write_bundle({test::make_asset(name, {{1.0, {test::rectangle(0, 0, 4, 2)}}})}));
+  const auto result = test::run_hullcook("inspect " + bundle.string() + " --json");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = nlohmann::json::parse(result.output)) << result.output;
+  // Valid sequences are kept; each byte that starts none becomes U+FFFD.
+  EXPECT_EQ(json["assets"][0]["name"], "caf\u00e9/a\ufffdb\ufffd\ufffd.png");
+}
+
 }  // namespace
 }  // namespace hullcook
