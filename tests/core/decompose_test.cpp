@@ -342,6 +342,46 @@ TEST(RandomPolygons, ContractAndIndependentConcavity) {
   EXPECT_GE(sp_checked, 12);
 }
 
+// Small inputs on which fuzzing the decomposer (issue 3, 2026-12-01) broke the contract: near-
+// degenerate coordinates, points exactly on bridges, slivers. Each is checked at τ = 0 and two
+// relative τ for every measure, every node against a fresh measurement.
+TEST(Issue3Fuzz, ContractOnEachReproducer) {
+  const std::pair<const char*, const char*> reproducers[] = {
+      {"A_hole_joined_into_pocket_with_bridge_point",
+       "2\n5 out\n8 5\n7 5\n6 7\n5 8\n1 1\n1 2 3 4 5\n3 in\n5 7\n5 6\n4 6\n1 2 3\n"},
+      {"B_sp_h1_pocket_with_bridge_point_overestimate",
+       "1\n9 out\n0 20\n3 16\n0 3\n4 13\n7 10\n2 5\n5 11\n0 2\n19 3\n1 2 3 4 5 6 7 8 9\n"},
+      {"C1_exactly_cw_triangle_accepted_as_ccw",
+       "1\n3 out\n-3857.600611386481 -4768.1008694683533\n-822.02518108401205 "
+       "-6285.8885846195881\n695.7625340672223 -7044.7824421952055\n1 2 3\n"},
+      {"C2_sp_zero_for_subulp_notch",
+       "1\n4 out\n567.00180505868536 -271.35592824723085\n664.96898774390843 "
+       "-152.7641381897156\n716.53057232282447 -49.64083673551238\n768.09215690174062 "
+       "53.482464718691062\n1 2 3 4\n"},
+      {"D_sliver_piece_zero_float_area",
+       "1\n6 out\n-78.493865772402046 328.99614260651038\n-346.73779416721209 "
+       "-475.73564257791958\n-1151.4695793516421 -743.97957097272956\n-614.98172256202201 "
+       "-1280.4674277623494\n-1151.4695793516421 -1816.9552845519697\n-78.493865772402046 "
+       "-2889.9309981312094\n1 2 3 4 5 6\n"},
+  };
+  for (const auto& [name, text] : reproducers) {
+    const std::vector<Region> regions = clean_and_validate(parse_poly(text, name), name);
+    const double radius = enclosing_radius(regions);
+    for (const Region& region : regions) {
+      for (Measure measure : kMeasures) {
+        for (double fraction : {0.0, 0.01, 0.1}) {
+          const double tau = fraction * radius;
+          const std::string what =
+              std::string(name) + " " + measure_name(measure) + " tau " + std::to_string(tau);
+          const DecompositionTree tree = decompose(region, {tau, measure, 0.1, 1.0});
+          expect_contract(region, tree.pieces_at(tau), tau, measure, what, 200);
+          check_tree(region, tree, measure, what);
+        }
+      }
+    }
+  }
+}
+
 TEST(Decompose, ConvexInputIsOnePieceAndSettingsAreChecked) {
   const Region square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
   const auto pieces = decompose(square, {0.0, Measure::h1, 0.1, 1.0}).pieces_at(0.0);

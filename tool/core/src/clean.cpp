@@ -212,6 +212,24 @@ Box box_of(const Ring& ring) {
   return box;
 }
 
+constexpr double kLargestCoordinate = 1e150;
+
+// The orientation of a simple ring, exactly: +1 counter-clockwise, -1 clockwise, 0 for none (no
+// turn at its lowest vertex). That vertex, lowest then leftmost, is a vertex of the convex hull,
+// so the ring turns there the way it runs. The sign of the floating-point area is not enough: a
+// sliver's area rounds to zero or to the wrong sign (issue 3's fuzzing: a clockwise triangle was
+// taken for a counter-clockwise one, and a valid sliver piece was refused for zero area).
+int exact_orientation(const Ring& ring) {
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < ring.size(); ++i) {
+    if (ring[i].y < ring[lowest].y || (ring[i].y == ring[lowest].y && ring[i].x < ring[lowest].x)) {
+      lowest = i;
+    }
+  }
+  const std::size_t n = ring.size();
+  return orientation(ring[(lowest + n - 1) % n], ring[lowest], ring[(lowest + 1) % n]);
+}
+
 }  // namespace
 
 std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source) {
@@ -235,13 +253,19 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
           fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
                " has a NaN or infinite coordinate");
         }
+        // Beyond it the orientation predicates' products overflow.
+        if (std::abs(ring[i].x) > kLargestCoordinate || std::abs(ring[i].y) > kLargestCoordinate) {
+          fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
+               " has a coordinate too large (beyond 1e150 in magnitude)");
+        }
       }
       ring = remove_degenerate_vertices(ring);
       if (ring.size() < 3) {
         fail(ring_name(ring_index) +
              ": fewer than 3 distinct points after removing repeated and collinear vertices");
       }
-      // Zero area with 3 non-collinear points means the ring meets itself: reported below.
+      // Zero area with 3 non-collinear points means the ring meets itself: reported below. Once
+      // the rings are known to be simple, their orientation is settled exactly.
       const double area = signed_area(ring);
       const bool want_ccw = ring_index == 0;
       if (area != 0.0 && (area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
@@ -277,10 +301,14 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
              " cross or touch" + where);
       }
     }
-    if (signed_area(region.outer) == 0.0) fail(ring_name(0) + ": zero area");
+    auto orient_exactly = [&](Ring& ring, int ring_index) {
+      const int turn = exact_orientation(ring);
+      if (turn == 0) fail(ring_name(ring_index) + ": zero area");
+      if ((turn > 0) != (ring_index == 0)) std::reverse(ring.begin(), ring.end());
+    };
+    orient_exactly(region.outer, 0);
     for (std::size_t h = 0; h < region.holes.size(); ++h) {
-      if (signed_area(region.holes[h]) == 0.0)
-        fail(ring_name(static_cast<int>(h + 1)) + ": zero area");
+      orient_exactly(region.holes[h], static_cast<int>(h + 1));
     }
     // No boundaries meet, so one vertex decides containment.
     std::vector<Box> boxes;

@@ -230,13 +230,25 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     return inherits ? hint->code[next_index(s, n)] : static_cast<signed char>(kFresh);
   };
   auto inherit = [&](std::size_t i) { result.vertex[i] = hint->value[i]; };
+  // A pocket is a parent pocket the child keeps whole when every vertex of it lies inside one. A
+  // parent hull point exactly on a bridge, no longer on the child's hull, would otherwise join two
+  // parent pockets into one child pocket, which the first vertex's code calls kept (issue 3's
+  // fuzzing: SP inherited 16.14 where the pocket measures 10.77).
+  auto inside_one_kept_pocket = [&](std::size_t s, std::size_t t) {
+    return pocket_code(s) == kInsideKeptPocket &&
+           !any_from(next_index(s, n), t, n,
+                     [&](std::size_t i) { return hint->code[i] != kInsideKeptPocket; });
+  };
   // The pockets split by a point found on their bridge are measured again without inheriting:
   // their bridges are shorter, and the distances may round differently.
   auto measure_straight_line = [&](std::size_t s, std::size_t t, bool may_inherit) {
-    const signed char code = may_inherit ? pocket_code(s) : static_cast<signed char>(kFresh);
+    signed char code = may_inherit ? pocket_code(s) : static_cast<signed char>(kFresh);
     if (code == kInsideKeptPocket) {
-      for_each_between(s, t, n, inherit);
-      return false;
+      if (inside_one_kept_pocket(s, t)) {
+        for_each_between(s, t, n, inherit);
+        return false;
+      }
+      code = kFresh;
     }
     const bool inherits_cut = measure == Measure::sl && code != kFresh;
     const Vec2 bs = ring[s], bt = ring[t];
@@ -267,8 +279,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   // A pocket measured again above is measured afresh under every measure, whatever its code says:
   // its straight-line values replaced the inherited ones.
   auto is_kept = [&](std::size_t s, std::size_t t) {
-    return pocket_code(s) == kInsideKeptPocket && on_hull[s] != kFoundOnEdge &&
-           on_hull[t] != kFoundOnEdge;
+    return on_hull[s] != kFoundOnEdge && on_hull[t] != kFoundOnEdge && inside_one_kept_pocket(s, t);
   };
   auto settle_found_points = [&] {
     if (found_on_edge) {
@@ -328,18 +339,22 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
         computed = detail::shortest_paths_to_bridge(chain);
       }
       const std::vector<double>& paths = cached ? *cached : computed;
-      double sp_max = 0.0;
-      for (double d : paths) sp_max = std::max(sp_max, d);
-      pocket_value = sp_max;
-      // H2 keeps the straight-line values (and witness) of a pocket already deeper than τ.
+      // A shortest path is never shorter than the straight line (§5.1), but the two are rounded
+      // differently: where a vertex sees its bridge directly, the path's projection can round
+      // below the straight-line distance, even to 0 for a notch a fraction of an ulp deep (issue
+      // 3's fuzzing), and τ = 0 then left a notch unresolved. Each vertex takes the larger.
       const bool keep_sl = measure == Measure::h2 && sl_max > tau;
       if (keep_sl && result.depth.empty()) result.depth = result.vertex;
+      double sp_max = 0.0;
       std::size_t k = 1;
       for_each_between(s, t, n, [&](std::size_t i) {
-        if (!keep_sl) result.vertex[i] = paths[k];
-        if (!result.depth.empty()) result.depth[i] = paths[k];
+        const double path = std::max(paths[k], result.vertex[i]);
+        sp_max = std::max(sp_max, path);
+        if (!keep_sl) result.vertex[i] = path;
+        if (!result.depth.empty()) result.depth[i] = path;
         ++k;
       });
+      pocket_value = sp_max;
     } else if (!result.depth.empty()) {
       for_each_between(s, t, n, [&](std::size_t i) { result.depth[i] = result.vertex[i]; });
     }
