@@ -212,6 +212,17 @@ TEST_F(CookCli, ReviewANoisyAlphaChannelIsRefusedBeforeDecomposing) {
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
+TEST_F(CookCli, ReviewADirectoryWithoutImagesIsBadInput) {
+  // It cooked to an empty bundle, exit 0, without a word.
+  fs::create_directories(directory / "polygons");
+  std::ofstream(directory / "polygons/a.poly") << "1\n3 out\n0 0\n1 0\n0 1\n1 2 3\n";
+  auto result = run_hullcook("cook " + (directory / "polygons").string() + " -o " +
+                             (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("no images"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+}
+
 TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
   // Cooked to a NaN area, the triangle was left out with a warning and the cook succeeded.
   expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");

@@ -57,6 +57,13 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
+      // Likely a wrong path (or polygons, which are only read when named): an empty bundle would
+      // hide it.
+      if (found.empty()) {
+        throw InputError(input.string() +
+                         ": no images in this directory (.png, .tga, .bmp, .webp; .poly files "
+                         "are cooked only when named)");
+      }
       std::sort(found.begin(), found.end(),
                 [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
       files.insert(files.end(), found.begin(), found.end());
