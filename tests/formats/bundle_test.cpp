@@ -265,6 +265,36 @@ TEST(Bundle, QuantizationMeetsTheBoundOnTinyAndHugeScales) {
   expect_round_trip(assets, bundle);
 }
 
+// From the adversarial review of 2026-12-01: an opaque sprite 2000 px across, at the default
+// τ, was refused (its hull spanned more than 65 535 quanta of 0.028 px). The quantum now grows
+// with the largest hull (SPEC §9), and the reported bound with it.
+TEST(Bundle, ReviewLargeHullsAreStoredWithALargerQuantum) {
+  for (double side : {2000.0, 8000.0, 65535.0}) {
+    SCOPED_TRACE(side);
+    const Ring square = test::rectangle(0, 0, side, side);
+    AlignedBytes bytes(write_bundle({test::make_asset("large", {{2.0, {square}}})}));
+    Bundle bundle;
+    ASSERT_EQ(bundle.open(bytes.data(), bytes.size), Status::ok);
+    const runtime::Asset asset = bundle.find("large");
+    ASSERT_TRUE(asset.valid());
+    const double expected = format::quantization_error_bound(2.0, 1.0, side);
+    EXPECT_GT(expected, format::quantization_error_bound(2.0, 1.0));
+    EXPECT_LE(asset.quantization_error(), expected * (1 + 1e-6));
+    const runtime::Level level = asset.level(0);
+    ASSERT_EQ(level.hull_count(), 1u);
+    const runtime::Hull hull = level.hull(0);
+    ASSERT_EQ(hull.vertex_count(), 4u);
+    for (std::size_t v = 0; v < hull.vertex_count(); ++v) {
+      const runtime::Vec2 point = hull.vertex(v);
+      double nearest = 1e300;
+      for (const Vec2& corner : square) {
+        nearest = std::min(nearest, std::hypot(point.x - corner.x, point.y - corner.y));
+      }
+      EXPECT_LE(nearest, asset.quantization_error() * (1 + 1e-6));
+    }
+  }
+}
+
 TEST(Bundle, WriterRefusesWhatItCannotStore) {
   auto box = [](const std::string& name) {
     return test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}});
@@ -272,9 +302,10 @@ TEST(Bundle, WriterRefusesWhatItCannotStore) {
   EXPECT_THROW(write_bundle({box("a"), box("a")}), OutputError);
   EXPECT_THROW(write_bundle({box("")}), OutputError);
   EXPECT_THROW(write_bundle({box(std::string(70000, 'x'))}), OutputError);
-  // Too large for 16-bit deltas at 1/64 px.
-  EXPECT_THROW(write_bundle({test::make_asset("huge", {{0.0, {test::rectangle(0, 0, 5000, 1)}}})}),
-               OutputError);
+  // Too far from the origin for the 32-bit grid at 1/64 px.
+  EXPECT_THROW(
+      write_bundle({test::make_asset("far", {{0.0, {test::rectangle(1e8, 0, 1e8 + 1, 1)}}})}),
+      OutputError);
   EXPECT_THROW(write_bundle({test::make_asset("nan", {{0.0, {{{0, 0}, {1, 0}, {NAN, 1}}}}})}),
                OutputError);
   EXPECT_THROW(write_bundle({test::make_asset("two", {{0.0, {{{0, 0}, {1, 0}}}}})}), OutputError);

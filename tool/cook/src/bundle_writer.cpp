@@ -138,7 +138,22 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
 }
 
 QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
-  const double bound = format::quantization_error_bound(levels[0].tau, asset.pixels_per_unit);
+  // A large sprite's hulls may extend beyond 65 535 quanta at 1 % of τ: the quantum grows with
+  // them (SPEC §9) rather than the asset being refused.
+  double largest_extent = 0.0;
+  for (const CookedLevel& level : levels) {
+    for (const Ring& hull : level.hulls) {
+      if (hull.empty()) continue;
+      double min_x = hull[0].x, max_x = min_x, min_y = hull[0].y, max_y = min_y;
+      for (const Vec2& p : hull) {
+        min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+        min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+      }
+      largest_extent = std::max({largest_extent, max_x - min_x, max_y - min_y});
+    }
+  }
+  const double bound =
+      format::quantization_error_bound(levels[0].tau, asset.pixels_per_unit, largest_extent);
   QuantizedAsset result;
   // Rounding alone moves a vertex by at most step/√2 = bound; halving covers dropped vertices.
   result.step = static_cast<float>(bound * std::sqrt(2.0));

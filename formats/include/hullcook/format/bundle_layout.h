@@ -252,10 +252,17 @@ std::uint64_t name_table_probe_cost(std::uint32_t slot_count, SlotAt&& slot_at) 
   return cost;
 }
 
+// The largest extent, in x or y, of a hull that 16-bit deltas store at quant_step: 65 535 quanta,
+// less a margin for the rounding of its end points and of quant_step to f32.
+inline constexpr double kHullExtentInQuanta = 65000.0;
+
 // The quantization error bound E of an asset (SPEC §9) [output units]: 1 % of the finest τ or
-// 1/64 px, whichever is larger.
-inline double quantization_error_bound(double finest_tau, double pixels_per_unit) noexcept {
-  return std::fmax(0.01 * finest_tau, 1.0 / (64.0 * pixels_per_unit));
+// 1/64 px, whichever is larger; or, for an asset whose largest hull extends more than 65 000
+// quanta of that, the bound at which it extends 65 000 (quant_step = √2 E).
+inline double quantization_error_bound(double finest_tau, double pixels_per_unit,
+                                       double largest_hull_extent = 0.0) noexcept {
+  return std::fmax(std::fmax(0.01 * finest_tau, 1.0 / (64.0 * pixels_per_unit)),
+                   largest_hull_extent / (kHullExtentInQuanta * 1.4142135623730951));
 }
 
 // A quantized coordinate in output units (SPEC §8): exact integer sum, one rounding to double.
