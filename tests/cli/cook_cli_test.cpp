@@ -176,6 +176,21 @@ TEST_F(CookCli, ReviewOptionsOutOfRangeAreUsageErrors) {
         << option << ": " << result.output;
     EXPECT_FALSE(fs::exists(output)) << option;
   }
+  fs::path polygon = write("triangle.poly", "1\n3 out\n0 0\n1 0\n0 1\n1 2 3\n");
+  for (const char* option : {"--sc nan", "--sd 0", "--sd inf", "--max-pieces -1"}) {
+    auto result = run_hullcook("decompose " + polygon.string() + " --tau 1 " + option);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage))
+        << option << ": " << result.output;
+  }
+  // A sidecar value beyond the f32 range is the sidecar's fault, named as such.
+  write("square.physics.json", "{\"density\": 1e39}");
+  auto result = run_hullcook("cook " + input.string() + " -o " + output.string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("square.physics.json"), std::string::npos) << result.output;
+  // The same file twice, by two spellings.
+  result = run_hullcook("cook " + input.string() + " -o " + (directory / "out.json").string() +
+                        " --json " + (directory / "." / "out.json").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
 }
 
 TEST_F(CookCli, ReviewASymbolicLinkLoopInADirectoryIsSkipped) {

@@ -73,8 +73,9 @@ void add_cook(CLI::App& root, CommandAction& action) {
         outputs.emplace_back(command->json);
       }
       for (const std::filesystem::path& output : outputs) check_output_path(output);
-      if (outputs.size() == 2 && std::filesystem::path(command->output).lexically_normal() ==
-                                     std::filesystem::path(command->json).lexically_normal()) {
+      std::error_code error;
+      if (outputs.size() == 2 && std::filesystem::weakly_canonical(outputs[0], error) ==
+                                     std::filesystem::weakly_canonical(outputs[1], error)) {
         throw UsageError("-o and --json name the same file: " + command->json);
       }
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());

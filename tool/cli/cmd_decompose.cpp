@@ -1,5 +1,6 @@
 // hullcook decompose: the ACD of one .poly file, its one-line summary and the debug JSON.
 #include "commands.h"
+#include "cook_options.h"
 
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/debug_json.h"
@@ -87,11 +88,15 @@ void add_decompose(CLI::App& root, CommandAction& action) {
   command->add_option("--measure", options->measure, "Concavity measure: sl, sp, h1 or h2")
       ->capture_default_str();
   command->add_option("--sc", options->sc, "Eq. 8 weight of the concavity at the cut's far end")
+      ->check(number_in(0, 1e9, "a weight in [0, 1e9]"))
       ->capture_default_str();
   command->add_option("--sd", options->sd, "Eq. 8 weight of the cut's length")
+      ->check(number_in(1e-9, 1e9, "a weight in [1e-9, 1e9]"))
       ->capture_default_str();
-  command->add_option("--max-pieces", options->max_pieces,
-                      "Shape budget: the finest level with at most this many pieces per region");
+  command
+      ->add_option("--max-pieces", options->max_pieces,
+                   "Shape budget: the finest level with at most this many pieces per region")
+      ->check(number_in(0, 1e9, "a count of pieces (0 = no budget)"));
   command->add_option("--json", options->json, "Write the debug JSON here");
   command->callback([options, &action] { action = [options] { return run_decompose(*options); }; });
 }

@@ -26,8 +26,18 @@ double parse_number(const std::string& text, const char* option) {
   return value;
 }
 
-// A finite number in [low, high]. CLI11's NonNegativeNumber lets nan and inf through, and an
-// unsigned option would wrap -1 round to "unlimited".
+std::array<std::uint8_t, 3> parse_color(const std::string& text) {
+  std::string hex = text;
+  if (!hex.empty() && hex[0] == '#') hex.erase(0, 1);
+  bool ok = hex.size() == 6 && hex.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
+  if (!ok) throw UsageError("--color-key: '" + text + "' is not a colour like #ff00ff");
+  unsigned long rgb = std::strtoul(hex.c_str(), nullptr, 16);
+  return {static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
+          static_cast<std::uint8_t>(rgb)};
+}
+
+}  // namespace
+
 CLI::Validator number_in(double low, double high, const std::string& what) {
   return CLI::Validator(
       [low, high, what](std::string& text) -> std::string {
@@ -41,20 +51,6 @@ CLI::Validator number_in(double low, double high, const std::string& what) {
       },
       what);
 }
-
-const double kFloatMax = std::numeric_limits<float>::max();
-
-std::array<std::uint8_t, 3> parse_color(const std::string& text) {
-  std::string hex = text;
-  if (!hex.empty() && hex[0] == '#') hex.erase(0, 1);
-  bool ok = hex.size() == 6 && hex.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
-  if (!ok) throw UsageError("--color-key: '" + text + "' is not a colour like #ff00ff");
-  unsigned long rgb = std::strtoul(hex.c_str(), nullptr, 16);
-  return {static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
-          static_cast<std::uint8_t>(rgb)};
-}
-
-}  // namespace
 
 void add_cook_options(CLI::App& command, Settings& settings, CookOptions& options) {
   command
@@ -142,7 +138,7 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->check(number_in(0, 1e9, "a distance in [0, 1e9] output units"))
       ->group("Engine");
 
-  const CLI::Validator physical = number_in(0, kFloatMax, "a finite number >= 0");
+  const CLI::Validator physical = number_in(0, kMaxPhysicsValue, "a finite number >= 0 (an f32)");
   command.add_option("--density", options.physics.density, "Density [kg/unit²]")
       ->check(physical)
       ->group("Physics");

@@ -18,6 +18,11 @@ struct CookOptions {
   PhysicsProperties physics;
 };
 
+// A finite number in [low, high], described as what ("a weight in [0, 1e9]"). CLI11's
+// NonNegativeNumber lets nan and inf through, and an unsigned option would wrap -1 round to
+// "unlimited".
+CLI::Validator number_in(double low, double high, const std::string& what);
+
 // Registers the decomposition, tracing, world-mapping, engine and physics options on command,
 // writing into settings and options.
 void add_cook_options(CLI::App& command, Settings& settings, CookOptions& options);

@@ -156,7 +156,12 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
       format::quantization_error_bound(levels[0].tau, asset.pixels_per_unit, largest_extent);
   QuantizedAsset result;
   // Rounding alone moves a vertex by at most step/√2 = bound; halving covers dropped vertices.
+  // The f32 step is rounded down, so that step/√2 never exceeds the bound: rounded up, a vertex
+  // half a quantum off in x and y could miss the bound and halve a step that large hulls need.
   result.step = static_cast<float>(bound * std::sqrt(2.0));
+  if (static_cast<double>(result.step) > bound * std::sqrt(2.0)) {
+    result.step = std::nextafter(result.step, 0.0f);
+  }
   for (int attempt = 0; attempt < 24; ++attempt, result.step *= 0.5f) {
     if (!(result.step > 0.0f)) break;
     result.levels.assign(levels.size(), {});

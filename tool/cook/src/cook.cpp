@@ -231,8 +231,7 @@ PreparedInput prepare_polygons(const InputFile& file, const Settings& settings) 
 // file NAME.physics.json beside the input, e.g. {"density": 2, "sensor": true}.
 std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
                                              const Settings& settings) {
-  std::filesystem::path sidecar = input;
-  sidecar.replace_extension(".physics.json");
+  const std::filesystem::path sidecar = physics_sidecar(input);
   std::error_code error;
   if (!std::filesystem::exists(sidecar, error)) return settings.physics;
   if (!std::filesystem::is_regular_file(sidecar, error)) {
@@ -248,8 +247,9 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
   for (const auto& [key, value] : json.items()) {
     auto number = [&, &key = key, &value = value]() {
       if (!value.is_number() || !(value.get<double>() >= 0.0) ||
-          !std::isfinite(value.get<double>())) {
-        throw InputError(sidecar.string() + ": '" + key + "' must be a non-negative number");
+          !(value.get<double>() <= kMaxPhysicsValue)) {
+        throw InputError(sidecar.string() + ": '" + key +
+                         "' must be a finite non-negative number (an f32)");
       }
       return value.get<double>();
     };
@@ -281,7 +281,7 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
 
 // Areas and squared lengths of coordinates beyond this overflow or lose all precision (a 1e300
 // polygon cooked to a NaN area and no hull), and no output format stores them.
-constexpr double kLargestCoordinate = 1e15;  // [output units]
+constexpr double kLargestOutputCoordinate = 1e15;
 
 void refuse_huge_coordinates(const std::vector<Region>& regions, const std::string& source) {
   double largest = 0.0;
@@ -292,7 +292,7 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
     visit(region.outer);
     for (const Ring& hole : region.holes) visit(hole);
   }
-  if (largest > kLargestCoordinate) {
+  if (largest > kLargestOutputCoordinate) {
     std::ostringstream message;
     message << source << ": a coordinate of " << largest
             << " output units is too large (at most 1e15; scale the input or raise --ppu)";
@@ -414,6 +414,12 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
 }
 
 }  // namespace
+
+std::filesystem::path physics_sidecar(const std::filesystem::path& input) {
+  std::filesystem::path sidecar = input;
+  sidecar.replace_extension(".physics.json");
+  return sidecar;
+}
 
 CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings) {
   if (!parse_measure(settings.measure)) {

@@ -15,12 +15,9 @@ namespace {
 // Writes bytes to a new temporary file beside path (same directory, so that the rename is
 // atomic) and returns its name. Throws OutputError naming path; on failure nothing is left.
 std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes) {
+  check_directory_of(path);
   std::filesystem::path directory = path.parent_path();
   if (directory.empty()) directory = ".";
-  if (!std::filesystem::is_directory(directory)) {
-    throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
-                      " does not exist");
-  }
   std::random_device entropy;
   std::filesystem::path temporary =
       directory / ("." + path.filename().string() + ".tmp" + std::to_string(entropy()));
@@ -39,6 +36,16 @@ std::filesystem::path write_temporary(const std::filesystem::path& path, std::st
 }
 
 }  // namespace
+
+void check_directory_of(const std::filesystem::path& path) {
+  std::filesystem::path directory = path.parent_path();
+  if (directory.empty()) directory = ".";
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error)) {
+    throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
+                      " does not exist");
+  }
+}
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   write_files_atomically({{path, std::string(bytes)}});

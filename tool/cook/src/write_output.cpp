@@ -45,20 +45,14 @@ void check_output_path(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw OutputError(path.string() + ": cannot write: it is a directory");
   }
-  std::filesystem::path directory = path.parent_path();
-  if (directory.empty()) directory = ".";
-  if (!std::filesystem::is_directory(directory, error)) {
-    throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
-                      " does not exist");
-  }
+  check_directory_of(path);
 }
 
 std::vector<std::filesystem::path> files_read(const CookResult& result) {
   std::vector<std::filesystem::path> files;
   for (const CookedAsset& asset : result.assets) {
     files.emplace_back(asset.source);
-    std::filesystem::path sidecar = asset.source;
-    sidecar.replace_extension(".physics.json");
+    const std::filesystem::path sidecar = physics_sidecar(asset.source);
     std::error_code error;
     if (std::filesystem::exists(sidecar, error)) files.push_back(sidecar);
   }

@@ -25,6 +25,10 @@ struct Transform {
   }
 };
 
+// The largest density, friction or restitution: they are stored as f32 (they must also be
+// finite and non-negative).
+inline constexpr double kMaxPhysicsValue = 3.4028234663852886e38;  // FLT_MAX
+
 // Optional per-asset physics properties, passed through to the engines.
 struct PhysicsProperties {
   float density = 1.0f;      // [kg/unit²]

@@ -75,6 +75,9 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
 // (UsageError), a directory or a missing directory (OutputError).
 void check_output_path(const std::filesystem::path& path);
 
+// The physics sidecar of an input image: NAME.physics.json beside NAME.png.
+std::filesystem::path physics_sidecar(const std::filesystem::path& input);
+
 // The files a cook read: every asset's source, and its physics sidecar where there is one.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
 

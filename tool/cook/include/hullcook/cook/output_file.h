@@ -9,6 +9,9 @@
 
 namespace hullcook {
 
+// Throws OutputError naming path if the directory it would be written in does not exist.
+void check_directory_of(const std::filesystem::path& path);
+
 // Writes bytes to a temporary file beside path, then renames it over path.
 // Throws OutputError naming the file and the reason; on failure nothing is left behind.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
