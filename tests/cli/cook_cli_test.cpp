@@ -104,6 +104,11 @@ TEST_F(CookCli, FullyTransparentImageWarnsAndCooksAnEmptyAsset) {
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("warning"), std::string::npos) << result.output;
   EXPECT_TRUE(fs::exists(directory / "out.json"));
+  // -q drops the table, not the warnings (the review of 2026-12-01 found them dropped too).
+  result = run_hullcook("cook " + input.string() + " -q -o " + (directory / "out.json").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("warning"), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("vertices"), std::string::npos) << result.output;
 }
 
 TEST_F(CookCli, MissingInputIsUsageOrInputError) {

@@ -30,6 +30,13 @@ void print_summary(const CookResult& result) {
     std::printf("%-56s %9zu %7zu %9zu %13.4g %9.2f\n", asset.name.c_str(),
                 asset.stats.traced_vertices, asset.stats.pieces, hulls, asset.stats.max_concavity,
                 asset.stats.total_ms);
+  }
+}
+
+// Warnings go to stderr even with -q, which only drops the table: a pipeline must still see
+// "nothing opaque" or a piece left out.
+void print_warnings(const CookResult& result) {
+  for (const CookedAsset& asset : result.assets) {
     for (const std::string& warning : asset.warnings) {
       std::fprintf(stderr, "hullcook: warning: %s: %s\n", asset.source.c_str(), warning.c_str());
     }
@@ -53,7 +60,8 @@ void add_cook(CLI::App& root, CommandAction& action) {
                   ".gltf, .glb, .json");
   app->add_option("--json", command->json, "Also write the debug JSON here");
   app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
-  app->add_flag("-q,--quiet", command->quiet, "Print no per-asset table");
+  app->add_flag("-q,--quiet", command->quiet,
+                "Print no per-asset table (warnings still go to stderr)");
   add_cook_options(*app, command->settings, command->options);
   app->callback([command, app, &action] {
     action = [command, app] {
@@ -83,6 +91,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
       CookResult result = cook(inputs, command->settings);
       write_outputs(result, outputs, command->settings);
       if (!command->quiet) print_summary(result);
+      print_warnings(result);
       return 0;
     };
   });
