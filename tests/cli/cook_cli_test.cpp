@@ -243,6 +243,31 @@ TEST_F(CookCli, ReviewADirectoryWithoutImagesIsBadInput) {
   EXPECT_FALSE(fs::exists(directory / "out.hcb"));
 }
 
+TEST_F(CookCli, ReviewAPolygonWithTooManyHolesIsRefusedByDecomposeToo) {
+  // 45 x 45 square holes: holes x vertices = 2025 x 8104, over the bound of 1e7.
+  constexpr int kSide = 45;
+  std::string text = std::to_string(1 + kSide * kSide) + "\n4 out\n0 0\n" +
+                     std::to_string(3 * kSide + 1) + " 0\n" + std::to_string(3 * kSide + 1) + " " +
+                     std::to_string(3 * kSide + 1) + "\n0 " + std::to_string(3 * kSide + 1) +
+                     "\n1 2 3 4\n";
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      const int x = 3 * i + 1, y = 3 * j + 1;
+      text += "4 in\n" + std::to_string(x) + " " + std::to_string(y) + "\n" + std::to_string(x) +
+              " " + std::to_string(y + 1) + "\n" + std::to_string(x + 1) + " " +
+              std::to_string(y + 1) + "\n" + std::to_string(x + 1) + " " + std::to_string(y) +
+              "\n1 2 3 4\n";
+    }
+  }
+  fs::path input = write("holes.poly", text);
+  auto result = run_hullcook("decompose " + input.string() + " --tau 1 --json " +
+                             (directory / "out.json").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("2025 holes"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.json"));
+  expect_bad_input(input, "2025 holes");
+}
+
 TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
   // Cooked to a NaN area, the triangle was left out with a warning and the cook succeeded.
   expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");

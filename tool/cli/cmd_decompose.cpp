@@ -37,6 +37,7 @@ int run_decompose(const DecomposeOptions& options) {
   }
   if (!options.json.empty()) check_not_an_input(options.json, {options.input});
   const std::vector<Region> regions = read_poly_file(options.input);
+  refuse_too_many_holes(regions, options.input, false);
   const double tau = tolerance.resolve(enclosing_radius(regions));
   const DecomposeSettings settings{tau, *measure, options.sc, options.sd};
 

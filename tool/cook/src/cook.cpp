@@ -300,32 +300,6 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
 }
 
-// Holes are resolved one at a time, each on the component holding the rest: time and memory grow
-// with the holes times the vertices (each resolution measures that component again, and the tree
-// keeps every component). A noisy alpha channel traces to thousands of pin holes and would take
-// minutes and gigabytes (a 448 px square of 50 % noise: 233 s, 1.6 GB; at the bound, 1e7, noise
-// took up to about 3 s), so such a region is refused before it is decomposed, saying what to
-// change.
-constexpr double kMaxHolesTimesVertices = 1e7;
-
-void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
-                           bool traced) {
-  for (std::size_t r = 0; r < regions.size(); ++r) {
-    std::size_t vertices = regions[r].outer.size();
-    for (const Ring& hole : regions[r].holes) vertices += hole.size();
-    const std::size_t holes = regions[r].holes.size();
-    if (static_cast<double>(holes) * static_cast<double>(vertices) <= kMaxHolesTimesVertices) {
-      continue;
-    }
-    throw InputError(source + ": region " + std::to_string(r + 1) + " has " +
-                     std::to_string(holes) + " holes among " + std::to_string(vertices) +
-                     " vertices, too many to decompose (holes x vertices must be at most 1e7)" +
-                     (traced ? "; is the alpha channel noisy? Raise --min-hole-area (smaller "
-                               "holes are filled) or --alpha"
-                             : ""));
-  }
-}
-
 CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   auto start = Clock::now();
   PreparedInput input =
@@ -414,6 +388,32 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
 }
 
 }  // namespace
+
+// Holes are resolved one at a time, each on the component holding the rest: time and memory grow
+// with the holes times the vertices (each resolution measures that component again, and the tree
+// keeps every component). A noisy alpha channel traces to thousands of pin holes and would take
+// minutes and gigabytes (a 448 px square of 50 % noise: 233 s, 1.6 GB; at the bound, 1e7, noise
+// took up to about 3 s), so such a region is refused before it is decomposed, saying what to
+// change.
+constexpr double kMaxHolesTimesVertices = 1e7;
+
+void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
+                           bool traced) {
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    std::size_t vertices = regions[r].outer.size();
+    for (const Ring& hole : regions[r].holes) vertices += hole.size();
+    const std::size_t holes = regions[r].holes.size();
+    if (static_cast<double>(holes) * static_cast<double>(vertices) <= kMaxHolesTimesVertices) {
+      continue;
+    }
+    throw InputError(source + ": region " + std::to_string(r + 1) + " has " +
+                     std::to_string(holes) + " holes among " + std::to_string(vertices) +
+                     " vertices, too many to decompose (holes x vertices must be at most 1e7)" +
+                     (traced ? "; is the alpha channel noisy? Raise --min-hole-area (smaller "
+                               "holes are filled) or --alpha"
+                             : ""));
+  }
+}
 
 std::filesystem::path physics_sidecar(const std::filesystem::path& input) {
   std::filesystem::path sidecar = input;
