@@ -24,15 +24,15 @@ OutputFormat output_format(const std::filesystem::path& path) {
 
 std::string output_bytes(const CookResult& result, const std::filesystem::path& path,
                          const Settings& settings) {
-  switch (output_format(path)) {
+  const OutputFormat format = output_format(path);
+  switch (format) {
     case OutputFormat::json:
       return debug_json(result.assets);
     case OutputFormat::bundle:
       return write_bundle(result.assets);
     case OutputFormat::gltf:
     case OutputFormat::glb:
-      return write_gltf(result.assets,
-                        GltfOptions{output_format(path) == OutputFormat::glb, settings.draco});
+      return write_gltf(result.assets, GltfOptions{format == OutputFormat::glb, settings.draco});
   }
   return {};
 }

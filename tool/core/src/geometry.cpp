@@ -130,7 +130,7 @@ bool melkman_steps(const Ring& ring, std::size_t first, std::vector<std::size_t>
   // Sets left to whether c lies strictly left of a->b; false: too close to call (filtered only).
   auto decide_left = [bound](Vec2 a, Vec2 b, Vec2 c, bool& left) {
     if constexpr (kFiltered) {
-      const double determinant = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+      const double determinant = detail::rounded_orient2d(a, b, c);
       left = determinant > 0.0;
       return std::abs(determinant) > bound;
     } else {

@@ -55,10 +55,17 @@ inline double max_abs_coordinate(const Region& region) {
   return max_abs;
 }
 
-inline double fast_orient2d(Vec2 a, Vec2 b, Vec2 c) {
+// orient2d's determinant as rounded, before any filter: its sign is orient2d's when its magnitude
+// exceeds the static bound in force. Loops that must not call orient2d (see melkman_steps) filter
+// it themselves, with the same expression as fast_orient2d.
+inline double rounded_orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double left = (a.x - c.x) * (b.y - c.y);
   const double right = (a.y - c.y) * (b.x - c.x);
-  const double determinant = left - right;
+  return left - right;
+}
+
+inline double fast_orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double determinant = rounded_orient2d(a, b, c);
   if (std::abs(determinant) > static_orient_error_bound) return determinant;
   return orient2d(a, b, c);
 }
