@@ -363,6 +363,11 @@ TEST(Issue3Fuzz, ContractOnEachReproducer) {
        "-475.73564257791958\n-1151.4695793516421 -743.97957097272956\n-614.98172256202201 "
        "-1280.4674277623494\n-1151.4695793516421 -1816.9552845519697\n-78.493865772402046 "
        "-2889.9309981312094\n1 2 3 4 5 6\n"},
+      // A piece inherits the vertex nearest to a hole's end only if no other was as near: here
+      // two are, and the piece numbers its vertices from another start than the parent.
+      {"E_tied_nearest_vertex_of_hole_end",
+       "5\n3 out\n0 0\n16 0\n0 19\n1 2 3\n3 in\n7 4\n8 4\n6 3\n1 2 3\n3 in\n3 5\n4 7\n5 7\n1 2 "
+       "3\n3 in\n8 2\n9 4\n10 3\n1 2 3\n4 in\n6 6\n8 6\n8 5\n6 5\n1 2 3 4\n"},
   };
   for (const auto& [name, text] : reproducers) {
     const std::vector<Region> regions = clean_and_validate(parse_poly(text, name), name);

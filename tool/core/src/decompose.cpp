@@ -61,6 +61,36 @@ struct OuterConcavity {
   std::vector<char> on_hull;    // per vertex: 2 a hull vertex, 1 exactly on a hull edge, else 0
 };
 
+// A candidate for Eq. 5's closest vertex x. Ties in distance go to the first vertex in the order
+// outer ring, holes by index, vertex index: the order in which a plain scan would meet them.
+struct NearVertex {
+  double distance = std::numeric_limits<double>::infinity();  // infinity: none (not known)
+  int ring = 0;                                               // 0 outer, h + 1 hole h
+  std::size_t index = 0;
+  bool unique = false;  // no other vertex searched lies as near
+  bool before(const NearVertex& other) const {
+    if (distance != other.distance) return distance < other.distance;
+    return ring != other.ring ? ring < other.ring : index < other.index;
+  }
+  // Takes a candidate if it comes before, keeping track of ties.
+  void offer(double candidate_distance, int candidate_ring, std::size_t candidate_index) {
+    if (candidate_distance < distance) {
+      *this = {candidate_distance, candidate_ring, candidate_index, true};
+    } else if (candidate_distance == distance) {
+      unique = false;
+      if (candidate_ring < ring || (candidate_ring == ring && candidate_index < index)) {
+        ring = candidate_ring, index = candidate_index;
+      }
+    }
+  }
+};
+
+// Eq. 5's antipodal pair of a hole (p, q) and the vertices of the other rings nearest to each.
+struct HoleEnds {
+  std::size_t p = kNone, q = kNone;  // kNone: not known
+  NearVertex from_p, from_q;
+};
+
 // What a child ring inherits from its parent's hull, per vertex. The parent's hull points that
 // the child keeps stay on the child's hull, and a parent pocket kept whole by the child cannot
 // hold a vertex of the child's hull: the ray leaving such a vertex outward would cross the pocket
@@ -89,6 +119,12 @@ struct ParentHint {
   std::vector<std::size_t> hull_candidates;
   std::size_t known_first = 0, known_last = 0;
   std::size_t start = kNone;  // in hull_candidates: the first parent hull vertex, or kNone
+  // Where the child's vertices come from: vertex k < from_parent of its outer ring is the parent's
+  // vertex (source_first + k) % n, and its hole c is the parent's hole hole_source[c].
+  std::size_t source_first = 0, from_parent = 0;
+  std::vector<std::size_t> hole_source;
+  // Per hole of the child, what it keeps of its parent's HoleEnds (see inherit_hole_ends).
+  std::vector<HoleEnds> hole_ends;
 };
 
 bool is_notch(const Ring& ring, std::size_t i) {
@@ -397,18 +433,6 @@ std::pair<std::size_t, std::size_t> principal_axis_extremes(const Ring& hole) {
   return {low, high};
 }
 
-// A candidate for Eq. 5's closest vertex x. Ties in distance go to the first vertex in the order
-// outer ring, holes by index, vertex index: the order in which a plain scan would meet them.
-struct NearVertex {
-  double distance = std::numeric_limits<double>::infinity();
-  int ring = 0;  // 0 outer, h + 1 hole h
-  std::size_t index = 0;
-  bool before(const NearVertex& other) const {
-    if (distance != other.distance) return distance < other.distance;
-    return ring != other.ring ? ring < other.ring : index < other.index;
-  }
-};
-
 // Squared distances decide which vertices need the exact (hypot) distance: a vertex whose squared
 // distance exceeds the smallest seen by this relative margin cannot be the closest (rounding is a
 // few ulps), provided no square overflows or loses precision to underflow.
@@ -417,15 +441,17 @@ bool squares_are_accurate(double squared) { return squared > 1e-200 && squared <
 
 // The closest vertex to point on ring ring_id, by a scan.
 void scan_ring(const Ring& ring, int ring_id, Vec2 point, NearVertex& best) {
+  // The squared distance beyond which a vertex is farther than the best (infinity: not known).
+  auto limit_of = [](double bound) {
+    return bound > 1e-100 && bound < 1e100 ? bound * bound * kSquaredMargin
+                                           : std::numeric_limits<double>::infinity();
+  };
+  double limit = limit_of(best.distance);
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Vec2 offset = ring[i] - point;
-    const double bound = best.distance;
-    if (bound > 1e-100 && bound < 1e100 &&
-        offset.x * offset.x + offset.y * offset.y > bound * bound * kSquaredMargin) {
-      continue;
-    }
-    const double d = distance(ring[i], point);
-    if (d < best.distance) best = {d, ring_id, i};
+    if (offset.x * offset.x + offset.y * offset.y > limit) continue;
+    best.offer(distance(ring[i], point), ring_id, i);
+    limit = limit_of(best.distance);
   }
 }
 
@@ -509,8 +535,7 @@ class VertexGrid {
         const double squared = offset.x * offset.x + offset.y * offset.y;
         if (squared > best_squared * kSquaredMargin) continue;
         best_squared = std::min(best_squared, squared);
-        const NearVertex candidate{distance(entry.point, point), entry.ring, entry.index};
-        if (candidate.before(best)) best = candidate;
+        best.offer(distance(entry.point, point), entry.ring, entry.index);
       }
     };
     // Square layers of cells around point's cell. After layer L every vertex left lies more than
@@ -567,37 +592,62 @@ HoleConcavity closest_to_ends(std::size_t p, std::size_t q, const NearVertex& fr
   return info;
 }
 
-constexpr std::size_t kHolesForVertexGrid = 3;
+constexpr std::size_t kSearchesForVertexGrid = 6;
 
-std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcavity& outer) {
+// Eq. 5 for every hole. Fills ends (per hole) with the antipodal pair and the nearest vertices,
+// taking those of inherited (per hole, or empty) that are known.
+std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcavity& outer,
+                                         const std::vector<HoleEnds>& inherited,
+                                         std::vector<HoleEnds>& ends) {
   const std::size_t k = region.holes.size();
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
-  std::vector<std::pair<std::size_t, std::size_t>> extremes(k);
-  // The grid pays for its building from three holes on; fewer are searched by plain scans.
+  ends.resize(k);
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  std::size_t searches = 0;
+  for (std::size_t h = 0; h < k; ++h) {
+    HoleEnds& hole_ends = ends[h];
+    if (inherited.size() == k) hole_ends = inherited[h];
+    if (hole_ends.p == kNone) {
+      std::tie(hole_ends.p, hole_ends.q) = principal_axis_extremes(region.holes[h]);
+    }
+    searches += (hole_ends.from_p.distance == kUnknown) + (hole_ends.from_q.distance == kUnknown);
+  }
+  // The grid pays for its building from six searches on (three holes without inherited ends);
+  // fewer are plain scans.
   std::optional<VertexGrid> grid;
-  if (k >= kHolesForVertexGrid) grid.emplace(region);
+  bool grid_built = false;
+  auto vertex_grid = [&]() -> const VertexGrid* {
+    if (!grid_built && searches >= kSearchesForVertexGrid) grid.emplace(region);
+    grid_built = true;
+    return grid ? &*grid : nullptr;
+  };
   for (std::size_t h = 0; h < k; ++h) {
     const Ring& hole = region.holes[h];
-    const auto [p, q] = extremes[h] = principal_axis_extremes(hole);
+    HoleEnds& hole_ends = ends[h];
     const int hole_ring = static_cast<int>(h + 1);
-    auto nearest = [&](Vec2 point) {
-      if (grid) {
-        if (const auto found = grid->nearest(point, [&](int ring) { return ring != hole_ring; })) {
-          return *found;
+    auto search = [&](std::size_t end, NearVertex& nearest) {
+      if (nearest.distance != kUnknown) return;
+      if (const VertexGrid* const index = vertex_grid()) {
+        if (const auto found =
+                index->nearest(hole[end], [&](int ring) { return ring != hole_ring; })) {
+          nearest = *found;
+          return;
         }
       }
-      return nearest_by_scan(region, point, hole_ring);
+      nearest = nearest_by_scan(region, hole[end], hole_ring);
     };
-    holes[h] = closest_to_ends(p, q, nearest(hole[p]), nearest(hole[q]));
+    search(hole_ends.p, hole_ends.from_p);
+    search(hole_ends.q, hole_ends.from_q);
+    holes[h] = closest_to_ends(hole_ends.p, hole_ends.q, hole_ends.from_p, hole_ends.from_q);
   }
   // The closest vertex of ∂P0 alone, where the chain of closest vertices cycles.
   auto outer_fallback = [&](std::size_t h) {
     const Ring& hole = region.holes[h];
-    const auto [p, q] = extremes[h];
+    const std::size_t p = ends[h].p, q = ends[h].q;
     auto nearest_on_outer = [&](Vec2 point) {
-      if (grid) {
-        if (const auto found = grid->nearest(point, [](int ring) { return ring == 0; })) {
+      if (const VertexGrid* const index = vertex_grid()) {
+        if (const auto found = index->nearest(point, [](int ring) { return ring == 0; })) {
           return *found;
         }
       }
@@ -1048,6 +1098,7 @@ bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
 ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, std::size_t size,
                       std::size_t from_parent, bool with_values) {
   ParentHint hint;
+  hint.source_first = source_first, hint.from_parent = from_parent;
   const std::vector<char>& parent_on_hull = parent.on_hull;
   const std::size_t n = parent_on_hull.size();
   if (n == 0) return hint;
@@ -1127,8 +1178,11 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   const std::size_t second_source = cut_chain(ring, j, i, second.outer);
   hints.second =
       child_hint(parent, second_source, second.outer.size(), second.outer.size(), with_values);
-  for (const Ring& hole : region.holes) {
-    (in_first_piece(first.outer, second.outer, hole[0]) ? first : second).holes.push_back(hole);
+  for (std::size_t o = 0; o < region.holes.size(); ++o) {
+    const Ring& hole = region.holes[o];
+    const bool in_first = in_first_piece(first.outer, second.outer, hole[0]);
+    (in_first ? first : second).holes.push_back(hole);
+    (in_first ? hints.first : hints.second).hole_source.push_back(o);
   }
   return {std::move(first), std::move(second)};
 }
@@ -1219,14 +1273,48 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
     if (o == h) continue;
     const Ring& other = region.holes[o];
-    (in_first_piece(first.outer, second.outer, other[0]) ? first : second).holes.push_back(other);
+    const bool in_first = in_first_piece(first.outer, second.outer, other[0]);
+    (in_first ? first : second).holes.push_back(other);
+    (in_first ? hints.first : hints.second).hole_source.push_back(o);
   }
   return {std::move(first), std::move(second)};
+}
+
+// What a piece keeps of its parent's HoleEnds (see ParentHint::hole_ends): a hole keeps its
+// antipodal pair, and the vertex nearest to an end where the piece keeps that vertex and no other
+// vertex was as near. The piece's vertices are some of the parent's, so none is nearer.
+void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent_ends,
+                       const Region& piece, ParentHint& hint) {
+  if (parent_ends.size() != parent.holes.size() || hint.hole_source.size() != piece.holes.size()) {
+    return;
+  }
+  std::vector<int> ring_in_piece(parent.holes.size() + 1, -1);  // by the parent's ring id
+  for (std::size_t c = 0; c < piece.holes.size(); ++c) {
+    ring_in_piece[hint.hole_source[c] + 1] = static_cast<int>(c + 1);
+  }
+  const std::size_t n = parent.outer.size();
+  auto in_piece = [&](const NearVertex& nearest) -> NearVertex {
+    if (!nearest.unique) return {};
+    if (nearest.ring != 0) {
+      const int ring = ring_in_piece[static_cast<std::size_t>(nearest.ring)];
+      if (ring < 0) return {};
+      return {nearest.distance, ring, nearest.index, true};
+    }
+    const std::size_t k = (nearest.index + n - hint.source_first % n) % n;
+    if (k >= hint.from_parent || piece.outer[k] != parent.outer[nearest.index]) return {};
+    return {nearest.distance, 0, k, true};
+  };
+  hint.hole_ends.resize(piece.holes.size());
+  for (std::size_t c = 0; c < piece.holes.size(); ++c) {
+    const HoleEnds& from = parent_ends[hint.hole_source[c]];
+    hint.hole_ends[c] = {from.p, from.q, in_piece(from.from_p), in_piece(from.from_q)};
+  }
 }
 
 struct Evaluation {
   OuterConcavity outer;
   std::vector<HoleConcavity> holes;
+  std::vector<HoleEnds> hole_ends;
   double value = 0.0;
   int deepest_hole = -1;
 };
@@ -1237,7 +1325,9 @@ Evaluation evaluate(const Region& region, Measure measure, double tau, PocketCac
   e.outer = measure_outer(region.outer, measure, tau, cache, hint);
   e.value = e.outer.value;
   if (!region.holes.empty()) {
-    e.holes = measure_holes(region, e.outer);
+    static const std::vector<HoleEnds> kNothingInherited;
+    e.holes =
+        measure_holes(region, e.outer, hint ? hint->hole_ends : kNothingInherited, e.hole_ends);
     for (std::size_t h = 0; h < e.holes.size(); ++h) {
       if (e.deepest_hole < 0 || e.holes[h].value > e.holes[std::size_t(e.deepest_hole)].value) {
         e.deepest_hole = static_cast<int>(h);
@@ -1582,6 +1672,10 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
       witness = {component.outer[e.outer.witness], -1};
     }
     if (!parts) continue;  // cannot happen on a valid region; keep the node whole
+    if (!component.holes.empty()) {
+      inherit_hole_ends(component, e.hole_ends, parts->first, child_hints.first);
+      inherit_hole_ends(component, e.hole_ends, parts->second, child_hints.second);
+    }
     const int first = static_cast<int>(tree.nodes_.size());
     tree.nodes_.push_back({std::move(parts->first), 0.0, {}, {-1, -1}});
     tree.nodes_.push_back({std::move(parts->second), 0.0, {}, {-1, -1}});
