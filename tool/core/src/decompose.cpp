@@ -1072,23 +1072,39 @@ std::size_t cut_chain(const Ring& ring, std::size_t first, std::size_t last, Rin
   return (first + front) % n;
 }
 
-// Whether p lies in the first of two pieces cut from a region, for a point strictly inside the
-// region and off the cuts (a vertex of a hole the cuts do not touch): it lies inside exactly one
-// piece, so only the smaller ring is searched.
-bool in_first_piece(const Ring& first, const Ring& second, Vec2 p) {
-  // locate_point's crossing count without its test for p on each edge: p is on neither ring.
-  auto inside = [p](const Ring& ring) {
-    bool odd = false;
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const Vec2 a = ring[j], b = ring[i];
-      if ((a.y > p.y) != (b.y > p.y)) {
-        const double side = detail::fast_orient2d(a, b, p);
-        if ((b.y > a.y) ? side > 0.0 : side < 0.0) odd = !odd;
-      }
+// Gives each hole of a region but cut_hole (kNone: none) to the piece of the two cut from it that
+// holds it, and records where the pieces' holes come from (ParentHint::hole_source). A hole the
+// cuts do not touch lies strictly inside the region and off the cuts, so inside exactly one
+// piece: its first vertex is located in the smaller ring only, by locate_point's crossing count
+// without its test for a point on each edge, for all the holes in one pass.
+void distribute_holes(const Region& region, std::size_t cut_hole, std::pair<Region, Region>& pieces,
+                      std::pair<ParentHint, ParentHint>& hints) {
+  const bool search_first = pieces.first.outer.size() <= pieces.second.outer.size();
+  const Ring& ring = search_first ? pieces.first.outer : pieces.second.outer;
+  // An edge a-b crosses the horizontal line through p where min(a.y, b.y) <= p.y < max(a.y, b.y):
+  // the holes' first vertices by height find the few that an edge crosses.
+  std::vector<std::pair<double, std::size_t>> by_height;
+  for (std::size_t o = 0; o < region.holes.size(); ++o) {
+    if (o != cut_hole) by_height.emplace_back(region.holes[o][0].y, o);
+  }
+  std::sort(by_height.begin(), by_height.end());
+  std::vector<char> inside(region.holes.size(), 0);
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size() && !by_height.empty(); j = i++) {
+    const Vec2 a = ring[j], b = ring[i];
+    const double low = std::min(a.y, b.y), high = std::max(a.y, b.y);
+    auto point = std::lower_bound(by_height.begin(), by_height.end(), low,
+                                  [](const auto& entry, double y) { return entry.first < y; });
+    for (; point != by_height.end() && point->first < high; ++point) {
+      const double side = detail::fast_orient2d(a, b, region.holes[point->second][0]);
+      if ((b.y > a.y) ? side > 0.0 : side < 0.0) inside[point->second] ^= 1;
     }
-    return odd;
-  };
-  return first.size() <= second.size() ? inside(first) : !inside(second);
+  }
+  for (std::size_t o = 0; o < region.holes.size(); ++o) {
+    if (o == cut_hole) continue;
+    const bool in_first = (inside[o] != 0) == search_first;
+    (in_first ? pieces.first : pieces.second).holes.push_back(region.holes[o]);
+    (in_first ? hints.first : hints.second).hole_source.push_back(o);
+  }
 }
 
 // The hint (see ParentHint) of a child of size vertices whose vertex k < from_parent is the
@@ -1171,20 +1187,17 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
                                       const OuterConcavity& parent, bool with_values,
                                       std::pair<ParentHint, ParentHint>& hints) {
   const Ring& ring = region.outer;
-  Region first, second;
+  std::pair<Region, Region> pieces;
+  Region& first = pieces.first;
+  Region& second = pieces.second;
   const std::size_t first_source = cut_chain(ring, i, j, first.outer);
   hints.first =
       child_hint(parent, first_source, first.outer.size(), first.outer.size(), with_values);
   const std::size_t second_source = cut_chain(ring, j, i, second.outer);
   hints.second =
       child_hint(parent, second_source, second.outer.size(), second.outer.size(), with_values);
-  for (std::size_t o = 0; o < region.holes.size(); ++o) {
-    const Ring& hole = region.holes[o];
-    const bool in_first = in_first_piece(first.outer, second.outer, hole[0]);
-    (in_first ? first : second).holes.push_back(hole);
-    (in_first ? hints.first : hints.second).hole_source.push_back(o);
-  }
-  return {std::move(first), std::move(second)};
+  distribute_holes(region, kNone, pieces, hints);
+  return pieces;
 }
 
 // remove_degenerate_vertices_in_place on rings made of chains of clean rings, in two steps:
@@ -1259,7 +1272,9 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   const Ring& outer = region.outer;
   const Ring& hole = region.holes[h];
   const std::size_t n = outer.size(), m = hole.size();
-  Region first, second;
+  std::pair<Region, Region> pieces;
+  Region& first = pieces.first;
+  Region& second = pieces.second;
   first.outer.reserve((y + n - x) % n + (p + m - q) % m + 2);
   append_without_degeneracies(outer, x, y, first.outer);
   append_without_degeneracies(hole, q, p, first.outer);
@@ -1270,14 +1285,8 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   append_without_degeneracies(hole, p, q, second.outer);
   close_without_degeneracies(second.outer);
   hints.second = hole_piece_hint(outer, parent, with_values, y, x, second.outer);
-  for (std::size_t o = 0; o < region.holes.size(); ++o) {
-    if (o == h) continue;
-    const Ring& other = region.holes[o];
-    const bool in_first = in_first_piece(first.outer, second.outer, other[0]);
-    (in_first ? first : second).holes.push_back(other);
-    (in_first ? hints.first : hints.second).hole_source.push_back(o);
-  }
-  return {std::move(first), std::move(second)};
+  distribute_holes(region, h, pieces, hints);
+  return pieces;
 }
 
 // What a piece keeps of its parent's HoleEnds (see ParentHint::hole_ends): a hole keeps its
@@ -1436,18 +1445,28 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& pro
                                                   std::size_t quick_tests = 0,
                                                   bool* gave_up = nullptr) {
   if (provisional.empty()) return std::nullopt;
+  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower. It
+  // grows with the provisional score, so one that the runner-up cannot beat settles the rest.
+  auto may_beat = [](const ScoredVertex& best, double provisional_score) {
+    return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
+  };
   const ScoredVertex* top = &provisional[0];
+  double runner_up = -std::numeric_limits<double>::infinity();
   for (const ScoredVertex& candidate : provisional) {
-    if (scores_before(candidate, *top)) top = &candidate;
+    if (scores_before(candidate, *top)) {
+      runner_up = std::max(runner_up, top->score);
+      top = &candidate;
+    } else if (&candidate != top) {
+      runner_up = std::max(runner_up, candidate.score);
+    }
   }
   ScoredVertex best{exact(top->index), top->index};
-  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower.
-  for (const ScoredVertex& candidate : provisional) {
-    if (&candidate == top || best.score > candidate.score + std::abs(candidate.score) * 1e-9) {
-      continue;
+  if (provisional.size() > 1 && may_beat(best, runner_up)) {
+    for (const ScoredVertex& candidate : provisional) {
+      if (&candidate == top || !may_beat(best, candidate.score)) continue;
+      const ScoredVertex scored{exact(candidate.index), candidate.index};
+      if (scores_before(scored, best)) best = scored;
     }
-    const ScoredVertex scored{exact(candidate.index), candidate.index};
-    if (scores_before(scored, best)) best = scored;
   }
   if (accept(best.index)) return best.index;
   return first_accepted_by_score(provisional, exact, accept, quick_tests, gave_up);
