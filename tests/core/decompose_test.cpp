@@ -368,6 +368,15 @@ TEST(Issue3Fuzz, ContractOnEachReproducer) {
       {"E_tied_nearest_vertex_of_hole_end",
        "5\n3 out\n0 0\n16 0\n0 19\n1 2 3\n3 in\n7 4\n8 4\n6 3\n1 2 3\n3 in\n3 5\n4 7\n5 7\n1 2 "
        "3\n3 in\n8 2\n9 4\n10 3\n1 2 3\n4 in\n6 6\n8 6\n8 5\n6 5\n1 2 3 4\n"},
+      // A piece cut along a hole has that hole's chain on its outer ring: the parent's nearest
+      // vertex of ∂P0 stays the piece's only if the chain lies farther.
+      {"F_cut_hole_chain_nearer_than_inherited_outer_vertex",
+       "5\n3 out\n6.3214089685216805 6.0882267092229228\n-5.849096688321139 6.8283503503725944\n"
+       "7.288420557163322 -6.7738361191772052\n1 2 3\n3 in\n3.3329687373499448 "
+       "3.2623782136186774\n1.9044423356973397 4.2370792224076679\n3.5212359029162101 "
+       "4.3735134134198796\n1 2 3\n3 in\n3 1\n3 0\n2 0\n1 2 3\n3 in\n3.6782523864786825 "
+       "1.1256208236202898\n3.3394339448187877 1.4738485212707955\n3.762580359996103 "
+       "1.389401169304544\n1 2 3\n3 in\n1 4\n2 2\n1 3\n1 2 3\n"},
   };
   for (const auto& [name, text] : reproducers) {
     const std::vector<Region> regions = clean_and_validate(parse_poly(text, name), name);

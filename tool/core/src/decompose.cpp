@@ -85,10 +85,12 @@ struct NearVertex {
   }
 };
 
-// Eq. 5's antipodal pair of a hole (p, q) and the vertices of the other rings nearest to each.
+// Eq. 5's antipodal pair of a hole (p, q) and the vertices of the other rings nearest to each;
+// and, once a cycle of closest vertices asked for them, the vertices of ∂P0 nearest to each.
 struct HoleEnds {
   std::size_t p = kNone, q = kNone;  // kNone: not known
   NearVertex from_p, from_q;
+  NearVertex outer_from_p, outer_from_q;
 };
 
 // What a child ring inherits from its parent's hull, per vertex. The parent's hull points that
@@ -120,9 +122,12 @@ struct ParentHint {
   std::size_t known_first = 0, known_last = 0;
   std::size_t start = kNone;  // in hull_candidates: the first parent hull vertex, or kNone
   // Where the child's vertices come from: vertex k < from_parent of its outer ring is the parent's
-  // vertex (source_first + k) % n, and its hole c is the parent's hole hole_source[c].
+  // vertex (source_first + k) % n, and its hole c is the parent's hole hole_source[c]. A piece cut
+  // along a hole continues its outer ring with that hole's chain, from its vertex chain_first on,
+  // less the vertices the seams removed.
   std::size_t source_first = 0, from_parent = 0;
   std::vector<std::size_t> hole_source;
+  std::size_t chain_hole = kNone, chain_first = 0;
   // Per hole of the child, what it keeps of its parent's HoleEnds (see inherit_hole_ends).
   std::vector<HoleEnds> hole_ends;
 };
@@ -644,18 +649,21 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
   // The closest vertex of ∂P0 alone, where the chain of closest vertices cycles.
   auto outer_fallback = [&](std::size_t h) {
     const Ring& hole = region.holes[h];
-    const std::size_t p = ends[h].p, q = ends[h].q;
-    auto nearest_on_outer = [&](Vec2 point) {
+    HoleEnds& hole_ends = ends[h];
+    auto search = [&](Vec2 point, NearVertex& nearest) {
+      if (nearest.distance != kUnknown) return;
       if (const VertexGrid* const index = vertex_grid()) {
         if (const auto found = index->nearest(point, [](int ring) { return ring == 0; })) {
-          return *found;
+          nearest = *found;
+          return;
         }
       }
-      NearVertex best;
-      scan_ring(region.outer, 0, point, best);
-      return best;
+      scan_ring(region.outer, 0, point, nearest);
     };
-    return closest_to_ends(p, q, nearest_on_outer(hole[p]), nearest_on_outer(hole[q]));
+    search(hole[hole_ends.p], hole_ends.outer_from_p);
+    search(hole[hole_ends.q], hole_ends.outer_from_q);
+    return closest_to_ends(hole_ends.p, hole_ends.q, hole_ends.outer_from_p,
+                           hole_ends.outer_from_q);
   };
   // Depth through the chain of closest vertices (Fig. 12(b)); a cycle falls back to ∂P0.
   std::vector<int> state(k, 0);  // 0 new, 1 in progress, 2 done
@@ -1287,6 +1295,8 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   append_without_degeneracies(hole, p, q, second.outer);
   close_without_degeneracies(second.outer);
   hints.second = hole_piece_hint(outer, parent, with_values, y, x, second.outer);
+  hints.first.chain_hole = hints.second.chain_hole = h;
+  hints.first.chain_first = q, hints.second.chain_first = p;
   distribute_holes(region, h, pieces, hints);
   return pieces;
 }
@@ -1304,21 +1314,50 @@ void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent
     ring_in_piece[hint.hole_source[c] + 1] = static_cast<int>(c + 1);
   }
   const std::size_t n = parent.outer.size();
+  // On the piece's outer ring at k, if it is there: a piece's vertices are distinct.
+  auto on_outer = [&](const NearVertex& nearest, std::size_t k, Vec2 point) -> NearVertex {
+    if (k >= piece.outer.size() || piece.outer[k] != point) return {};
+    return {nearest.distance, 0, k, true};
+  };
   auto in_piece = [&](const NearVertex& nearest) -> NearVertex {
     if (!nearest.unique) return {};
-    if (nearest.ring != 0) {
-      const int ring = ring_in_piece[static_cast<std::size_t>(nearest.ring)];
-      if (ring < 0) return {};
-      return {nearest.distance, ring, nearest.index, true};
+    if (nearest.ring == 0) {
+      const std::size_t k = (nearest.index + n - hint.source_first % n) % n;
+      return k < hint.from_parent ? on_outer(nearest, k, parent.outer[nearest.index])
+                                  : NearVertex{};
     }
-    const std::size_t k = (nearest.index + n - hint.source_first % n) % n;
-    if (k >= hint.from_parent || piece.outer[k] != parent.outer[nearest.index]) return {};
-    return {nearest.distance, 0, k, true};
+    const std::size_t hole = static_cast<std::size_t>(nearest.ring - 1);
+    if (hole == hint.chain_hole) {
+      const std::size_t m = parent.holes[hole].size();
+      const std::size_t k = hint.from_parent + (nearest.index + m - hint.chain_first) % m;
+      return on_outer(nearest, k, parent.holes[hole][nearest.index]);
+    }
+    const int ring = ring_in_piece[static_cast<std::size_t>(nearest.ring)];
+    if (ring < 0) return {};
+    return {nearest.distance, ring, nearest.index, true};
+  };
+  // On ∂P0 alone: a piece cut along a hole has the hole's chain on its outer ring too, whose
+  // vertices (from from_parent on) must all lie farther.
+  auto in_piece_outer = [&](const NearVertex& nearest, Vec2 end) -> NearVertex {
+    const NearVertex kept = in_piece(nearest);
+    if (kept.distance == std::numeric_limits<double>::infinity() || hint.chain_hole == kNone) {
+      return kept;
+    }
+    for (std::size_t k = hint.from_parent; k < piece.outer.size(); ++k) {
+      if (!(distance(piece.outer[k], end) > kept.distance)) return {};
+    }
+    return kept;
   };
   hint.hole_ends.resize(piece.holes.size());
   for (std::size_t c = 0; c < piece.holes.size(); ++c) {
     const HoleEnds& from = parent_ends[hint.hole_source[c]];
-    hint.hole_ends[c] = {from.p, from.q, in_piece(from.from_p), in_piece(from.from_q)};
+    const Ring& hole = piece.holes[c];
+    hint.hole_ends[c] = {from.p,
+                         from.q,
+                         in_piece(from.from_p),
+                         in_piece(from.from_q),
+                         in_piece_outer(from.outer_from_p, hole[from.p]),
+                         in_piece_outer(from.outer_from_q, hole[from.q])};
   }
 }
 
