@@ -1542,10 +1542,26 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   };
   resolving.resize(n);
   std::size_t resolving_count = 0;
+  auto take = [&](std::size_t i) {
+    resolving[resolving_count++] = {eq8(i, provisional_distance(pr, ring[i])), i};
+  };
+  // resolves() by the static filter alone (as in melkman_steps: a call in the loop would keep its
+  // registers on the stack); the few vertices it leaves undecided are tested after, exactly. The
+  // candidates' order does not matter: the searches order them by score, then index.
+  thread_local std::vector<std::size_t> undecided;
+  undecided.clear();
   auto collect_resolving = [&](std::size_t from, std::size_t to) {
+    const double bound = detail::static_orient_error_bound;
     for (std::size_t i = from; i < to; ++i) {
       const Vec2 x = ring[i];
-      if (resolves(x)) resolving[resolving_count++] = {eq8(i, provisional_distance(pr, x)), i};
+      const double before = detail::rounded_orient2d(a, pr, x);
+      const double after = detail::rounded_orient2d(x, pr, b);
+      if (before < -bound || after < -bound) continue;
+      if (before > bound && after > bound) {
+        take(i);
+      } else {
+        undecided.push_back(i);
+      }
     }
   };
   // Every vertex but r and its neighbours, in index order, without testing each index.
@@ -1556,6 +1572,9 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   } else {
     collect_resolving(0, r - 1);
     collect_resolving(r + 2, n);
+  }
+  for (std::size_t i : undecided) {
+    if (resolves(ring[i])) take(i);
   }
   resolving.resize(resolving_count);
   auto is_valid = [&](std::size_t i) {
