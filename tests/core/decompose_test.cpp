@@ -403,6 +403,12 @@ TEST(Decompose, ConvexInputIsOnePieceAndSettingsAreChecked) {
   EXPECT_EQ(pieces[0].concavity, 0.0);
   EXPECT_DOUBLE_EQ(convexity(pieces), 1.0);
   EXPECT_THROW(decompose(square, {-1.0, Measure::h1, 0.1, 1.0}), std::invalid_argument);
+  // Non-finite weights would make Eq. 8's scores NaN, which cannot be ordered (review of issue 3).
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(decompose(square, {0.0, Measure::sl, kInfinity, 1.0}), std::invalid_argument);
+  EXPECT_THROW(decompose(square, {0.0, Measure::sl, -0.1, 1.0}), std::invalid_argument);
+  EXPECT_THROW(decompose(square, {0.0, Measure::sl, 0.1, 0.0}), std::invalid_argument);
+  EXPECT_THROW(decompose(square, {0.0, Measure::sl, 0.1, std::nan("")}), std::invalid_argument);
   EXPECT_EQ(parse_measure("sp"), Measure::sp);
   EXPECT_FALSE(parse_measure("SP"));
   EXPECT_STREQ(measure_name(Measure::h2), "h2");

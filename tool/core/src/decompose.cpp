@@ -1450,7 +1450,7 @@ std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& pr
     if (accept(best.index)) return best.index;
   }
   if (quick_tests > 0) {
-    *gave_up = true;
+    if (gave_up) *gave_up = true;
     return std::nullopt;
   }
   std::optional<ScoredVertex> best;
@@ -1710,6 +1710,12 @@ std::vector<double> outer_vertex_concavity(const Ring& outer, Measure measure, d
 
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings) {
   if (!(settings.tau >= 0.0)) throw std::invalid_argument("decompose: tau must be >= 0");
+  if (!(settings.sc >= 0.0 && std::isfinite(settings.sc))) {
+    throw std::invalid_argument("decompose: sc must be finite and >= 0");
+  }
+  if (!(settings.sd > 0.0 && std::isfinite(settings.sd))) {
+    throw std::invalid_argument("decompose: sd must be finite and > 0");
+  }
   // Every point the decomposition orients is a vertex of the region (or one turned a quarter).
   const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
   DecompositionTree tree;

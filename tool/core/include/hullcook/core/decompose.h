@@ -22,8 +22,8 @@ const char* measure_name(Measure measure);
 struct DecomposeSettings {
   double tau = 0.0;  // [input units] concavity tolerance; 0 gives an exact convex decomposition
   Measure measure = Measure::h1;
-  double sc = 0.1;  // Eq. 8 weight of the concavity of the cut's far end [1/units]
-  double sd = 1.0;  // Eq. 8 weight of the cut's length [unitless]
+  double sc = 0.1;  // Eq. 8 weight of the concavity of the cut's far end [1/units]; finite, >= 0
+  double sd = 1.0;  // Eq. 8 weight of the cut's length [unitless]; finite, > 0
 };
 
 // One piece of a decomposition.
@@ -79,7 +79,8 @@ class DecompositionTree {
 };
 
 // Decomposes one cleaned region (see clean_and_validate) until every piece has concavity <= tau.
-// Deterministic. Throws std::invalid_argument on a negative or NaN tau.
+// Deterministic. Throws std::invalid_argument on a negative or NaN tau, or on sc or sd out of
+// their ranges (Eq. 8's scores must be numbers to be ordered).
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings);
 
 // Concavity of one cleaned region under a measure (H2 uses tau), as Algorithm 4.1 sees it: the
