@@ -68,6 +68,7 @@ struct NearVertex {
   int ring = 0;                                               // 0 outer, h + 1 hole h
   std::size_t index = 0;
   bool unique = false;  // no other vertex searched lies as near
+  bool known() const { return distance != std::numeric_limits<double>::infinity(); }
   bool before(const NearVertex& other) const {
     if (distance != other.distance) return distance < other.distance;
     return ring != other.ring ? ring < other.ring : index < other.index;
@@ -608,7 +609,6 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
   ends.resize(k);
-  constexpr double kUnknown = std::numeric_limits<double>::infinity();
   std::size_t searches = 0;
   for (std::size_t h = 0; h < k; ++h) {
     HoleEnds& hole_ends = ends[h];
@@ -616,7 +616,7 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     if (hole_ends.p == kNone) {
       std::tie(hole_ends.p, hole_ends.q) = principal_axis_extremes(region.holes[h]);
     }
-    searches += (hole_ends.from_p.distance == kUnknown) + (hole_ends.from_q.distance == kUnknown);
+    searches += !hole_ends.from_p.known() + !hole_ends.from_q.known();
   }
   // The grid pays for its building from six searches on (three holes without inherited ends);
   // fewer are plain scans.
@@ -627,41 +627,40 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
     grid_built = true;
     return grid ? &*grid : nullptr;
   };
+  // Fills nearest, unless known, with the vertex nearest to point on the rings searched takes: by
+  // the grid where there is one and it can tell, else by scan(point).
+  auto find_nearest = [&](Vec2 point, auto&& searched, auto&& scan, NearVertex& nearest) {
+    if (nearest.known()) return;
+    if (const VertexGrid* const index = vertex_grid()) {
+      if (const auto found = index->nearest(point, searched)) {
+        nearest = *found;
+        return;
+      }
+    }
+    nearest = scan(point);
+  };
   for (std::size_t h = 0; h < k; ++h) {
     const Ring& hole = region.holes[h];
     HoleEnds& hole_ends = ends[h];
     const int hole_ring = static_cast<int>(h + 1);
-    auto search = [&](std::size_t end, NearVertex& nearest) {
-      if (nearest.distance != kUnknown) return;
-      if (const VertexGrid* const index = vertex_grid()) {
-        if (const auto found =
-                index->nearest(hole[end], [&](int ring) { return ring != hole_ring; })) {
-          nearest = *found;
-          return;
-        }
-      }
-      nearest = nearest_by_scan(region, hole[end], hole_ring);
-    };
-    search(hole_ends.p, hole_ends.from_p);
-    search(hole_ends.q, hole_ends.from_q);
+    auto other_rings = [&](int ring) { return ring != hole_ring; };
+    auto scan = [&](Vec2 point) { return nearest_by_scan(region, point, hole_ring); };
+    find_nearest(hole[hole_ends.p], other_rings, scan, hole_ends.from_p);
+    find_nearest(hole[hole_ends.q], other_rings, scan, hole_ends.from_q);
     holes[h] = closest_to_ends(hole_ends.p, hole_ends.q, hole_ends.from_p, hole_ends.from_q);
   }
   // The closest vertex of ∂P0 alone, where the chain of closest vertices cycles.
   auto outer_fallback = [&](std::size_t h) {
     const Ring& hole = region.holes[h];
     HoleEnds& hole_ends = ends[h];
-    auto search = [&](Vec2 point, NearVertex& nearest) {
-      if (nearest.distance != kUnknown) return;
-      if (const VertexGrid* const index = vertex_grid()) {
-        if (const auto found = index->nearest(point, [](int ring) { return ring == 0; })) {
-          nearest = *found;
-          return;
-        }
-      }
-      scan_ring(region.outer, 0, point, nearest);
+    auto scan = [&](Vec2 point) {
+      NearVertex best;
+      scan_ring(region.outer, 0, point, best);
+      return best;
     };
-    search(hole[hole_ends.p], hole_ends.outer_from_p);
-    search(hole[hole_ends.q], hole_ends.outer_from_q);
+    auto outer_only = [](int ring) { return ring == 0; };
+    find_nearest(hole[hole_ends.p], outer_only, scan, hole_ends.outer_from_p);
+    find_nearest(hole[hole_ends.q], outer_only, scan, hole_ends.outer_from_q);
     return closest_to_ends(hole_ends.p, hole_ends.q, hole_ends.outer_from_p,
                            hole_ends.outer_from_q);
   };
@@ -1340,7 +1339,7 @@ void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent
   // vertices (from from_parent on) must all lie farther.
   auto in_piece_outer = [&](const NearVertex& nearest, Vec2 end) -> NearVertex {
     const NearVertex kept = in_piece(nearest);
-    if (kept.distance == std::numeric_limits<double>::infinity() || hint.chain_hole == kNone) {
+    if (!kept.known() || hint.chain_hole == kNone) {
       return kept;
     }
     for (std::size_t k = hint.from_parent; k < piece.outer.size(); ++k) {
@@ -1420,21 +1419,23 @@ bool scores_before(const ScoredVertex& u, const ScoredVertex& v) {
 // skipping the candidates that cannot beat the best one taken.
 // A quick search (quick_tests > 0) gives up instead, after refusals by its first quick_tests
 // candidates in order, and sets *gave_up; what it does return is what the full search returns.
+// Whether a candidate of this provisional score may score better than best once scored exactly:
+// provisional scores are within 1e-9 (relative) of the exact ones. The bound grows with the
+// provisional score.
+bool may_beat(double provisional_score, const ScoredVertex& best) {
+  return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
+}
+
 template <typename Exact, typename Accept>
 std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& provisional,
                                                    Exact&& exact, Accept&& accept,
                                                    std::size_t quick_tests = 0,
                                                    bool* gave_up = nullptr) {
   auto after = [](const ScoredVertex& u, const ScoredVertex& v) { return scores_before(v, u); };
-  auto may_beat = [](double provisional_score, const ScoredVertex& best) {
-    return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
-  };
   std::make_heap(provisional.begin(), provisional.end(), after);
   std::vector<ScoredVertex> scored;
   auto end = provisional.end();
-  const std::size_t full_tests_in_order = 16 + provisional.size() / 32;
-  for (std::size_t tests_in_order = quick_tests > 0 ? std::min(quick_tests, full_tests_in_order)
-                                                    : full_tests_in_order;
+  for (std::size_t tests_in_order = quick_tests > 0 ? quick_tests : 16 + provisional.size() / 32;
        tests_in_order > 0; --tests_in_order) {
     while (end != provisional.begin()) {
       if (!scored.empty() && !may_beat(provisional.front().score, scored.front())) break;
@@ -1486,11 +1487,8 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& pro
                                                   std::size_t quick_tests = 0,
                                                   bool* gave_up = nullptr) {
   if (provisional.empty()) return std::nullopt;
-  // The same bound as first_accepted_by_score: a candidate skipped here scores strictly lower. It
-  // grows with the provisional score, so one that the runner-up cannot beat settles the rest.
-  auto may_beat = [](const ScoredVertex& best, double provisional_score) {
-    return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
-  };
+  // A candidate that may_beat refuses scores strictly lower; its bound grows with the provisional
+  // score, so the runner-up refused settles every other candidate.
   const ScoredVertex* top = &provisional[0];
   double runner_up = -std::numeric_limits<double>::infinity();
   for (const ScoredVertex& candidate : provisional) {
@@ -1502,9 +1500,9 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& pro
     }
   }
   ScoredVertex best{exact(top->index), top->index};
-  if (provisional.size() > 1 && may_beat(best, runner_up)) {
+  if (provisional.size() > 1 && may_beat(runner_up, best)) {
     for (const ScoredVertex& candidate : provisional) {
-      if (&candidate == top || !may_beat(best, candidate.score)) continue;
+      if (&candidate == top || !may_beat(candidate.score, best)) continue;
       const ScoredVertex scored{exact(candidate.index), candidate.index};
       if (scores_before(scored, best)) best = scored;
     }
