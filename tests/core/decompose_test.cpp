@@ -342,6 +342,61 @@ TEST(RandomPolygons, ContractAndIndependentConcavity) {
   EXPECT_GE(sp_checked, 12);
 }
 
+// A block whose top is a comb of leaning teeth: each pocket between two tooth tips holds tips
+// that overhang their valleys, so its chain runs back along the bridge in places and forward in
+// others. The shortest paths cut such a pocket at chords from the vertices the chain passes only
+// once along the bridge, measure the forward parts straight and the others by the funnel: every
+// vertex must still get its shortest path, here against Dijkstra on the visibility graph.
+Region leaning_comb(std::mt19937& random, int teeth) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double pitch = 10.0;
+  Ring top;  // right to left, as a counter-clockwise ring runs along its top
+  for (int k = teeth - 1; k >= 0; --k) {
+    const double x0 = k * pitch + 1.0;
+    const double width = 2.0 + 3.0 * unit(random);
+    const double gap = pitch - width;
+    const double lean = (unit(random) * 2.0 - 1.0) * 0.9 * gap;  // overhangs, never touches
+    const double height = 4.0 + 12.0 * unit(random);
+    const double floor = 1.0 + 2.0 * unit(random);
+    top.push_back({x0 + width + 0.5 * gap, floor});
+    top.push_back({x0 + width, 3.0 + unit(random)});
+    top.push_back({x0 + width + lean, height});
+    top.push_back({x0 + lean + 0.5 * width * unit(random), height + 1.0 + unit(random)});
+    top.push_back({x0 + lean, height - 0.5 * unit(random)});
+    top.push_back({x0, 3.0 + unit(random)});
+  }
+  Region region;
+  region.outer.push_back({-10.0, -5.0});
+  region.outer.push_back({teeth * pitch + 10.0, -5.0});
+  for (Vec2 p : top) region.outer.push_back(p);
+  return region;
+}
+
+TEST(ShortestPaths, PocketsCutAtChordsMatchDijkstra) {
+  std::mt19937 random(20261202);
+  int checked = 0;
+  for (int shape = 0; shape < 40; ++shape) {
+    Region region;
+    try {
+      region = clean_and_validate({leaning_comb(random, 3 + shape % 6)}, "comb")[0];
+    } catch (const std::exception&) {
+      continue;
+    }
+    SCOPED_TRACE("comb " + std::to_string(shape));
+    const std::vector<double> expected = brute_sp_vertex_concavity(region.outer);
+    const std::vector<double> actual = outer_vertex_concavity(region.outer, Measure::sp);
+    int beyond_straight_line = 0;
+    const std::vector<double> straight = outer_vertex_concavity(region.outer, Measure::sl);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      ASSERT_NEAR(actual[i], expected[i], 1e-9 * (1 + expected[i])) << "vertex " << i;
+      if (expected[i] > straight[i] * (1 + 1e-6)) ++beyond_straight_line;
+    }
+    EXPECT_GT(beyond_straight_line, 0);  // some tip overhangs a vertex: the funnel had work
+    ++checked;
+  }
+  EXPECT_GE(checked, 30);
+}
+
 // Small inputs on which fuzzing the decomposer (issue 3, 2026-12-01) broke the contract: near-
 // degenerate coordinates, points exactly on bridges, slivers. Each is checked at τ = 0 and two
 // relative τ for every measure, every node against a fresh measurement.
