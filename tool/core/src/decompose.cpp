@@ -283,11 +283,24 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   };
   // The pockets split by a point found on their bridge are measured again without inheriting:
   // their bridges are shorter, and the distances may round differently.
+  // What the first pass learns of each pocket, in pocket order, for the passes after it (while no
+  // point found on a bridge has changed the pockets).
+  struct FirstLook {
+    bool kept;
+    double sl_max;
+  };
+  thread_local std::vector<FirstLook> first_looks;
+  first_looks.clear();
   auto measure_straight_line = [&](std::size_t s, std::size_t t, bool may_inherit) {
     signed char code = may_inherit ? pocket_code(s) : static_cast<signed char>(kFresh);
     if (code == kInsideKeptPocket) {
       if (inside_one_kept_pocket(s, t)) {
-        for_each_between(s, t, n, inherit);
+        double sl_max = 0.0;
+        for_each_between(s, t, n, [&](std::size_t i) {
+          inherit(i);
+          sl_max = std::max(sl_max, result.vertex[i]);
+        });
+        first_looks.push_back({true, sl_max});
         return false;
       }
       code = kFresh;
@@ -297,12 +310,18 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     const Vec2 along = bt - bs;
     const double length = std::hypot(along.x, along.y);
     bool found = false;
+    double sl_max = 0.0;
     for_each_between(s, t, n, [&](std::size_t i) {
-      if (inherits_cut && hint->code[i] == kInsideCutPocket) return inherit(i);
-      const double determinant = detail::fast_orient2d(bs, bt, ring[i]);
-      if (determinant == 0.0) on_hull[i] = kFoundOnEdge, found = true;
-      result.vertex[i] = std::abs(determinant) / length;
+      if (inherits_cut && hint->code[i] == kInsideCutPocket) {
+        inherit(i);
+      } else {
+        const double determinant = detail::fast_orient2d(bs, bt, ring[i]);
+        if (determinant == 0.0) on_hull[i] = kFoundOnEdge, found = true;
+        result.vertex[i] = std::abs(determinant) / length;
+      }
+      sl_max = std::max(sl_max, result.vertex[i]);
     });
+    first_looks.push_back({false, sl_max});
     return found;
   };
   collect_hull_points();
@@ -336,14 +355,24 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       result.witness = i;
     }
   };
+  // The pockets in the order of the first pass, with what it learnt of them unless a point found
+  // on a bridge changed them.
+  std::size_t pocket = 0;
+  auto first_look = [&](std::size_t s, std::size_t t) -> FirstLook {
+    if (!found_on_edge) return first_looks[pocket++];
+    double sl_max = 0.0;
+    for_each_between(s, t, n, [&](std::size_t i) { sl_max = std::max(sl_max, result.vertex[i]); });
+    return {is_kept(s, t), sl_max};
+  };
+  // No vertex of a pocket whose maximum is no more than the witness's value can replace it.
+  auto consider_pocket_witness = [&](std::size_t s, std::size_t t, double pocket_max) {
+    if (pocket_max > best_witness_value) for_each_between(s, t, n, consider_witness);
+  };
   if (measure == Measure::sl) {
-    // The values are final: one pass per pocket takes its maximum and the witness.
+    // The values are final: the maximum of each pocket, and the witness.
     for_each_pocket([&](std::size_t s, std::size_t t) {
-      double sl_max = 0.0;
-      for_each_between(s, t, n, [&](std::size_t i) {
-        sl_max = std::max(sl_max, result.vertex[i]);
-        consider_witness(i);
-      });
+      const double sl_max = first_look(s, t).sl_max;
+      consider_pocket_witness(s, t, sl_max);
       result.value = std::max(result.value, sl_max);
     });
     settle_found_points();
@@ -352,17 +381,16 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
   for_each_pocket([&](std::size_t s, std::size_t t) {
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
-    double sl_max = 0.0;
-    for_each_between(s, t, n, [&](std::size_t i) { sl_max = std::max(sl_max, result.vertex[i]); });
+    const auto [kept, sl_max] = first_look(s, t);
     // The hybrids take shortest paths where Observation 5.5 finds a hazard: an edge whose outward
     // normal opposes the bridge's.
     const bool is_hybrid = measure == Measure::h1 || measure == Measure::h2;
     // A pocket kept whole has its values already (inherited above).
-    const bool use_sp = !is_kept(s, t) && (measure == Measure::sp ||
-                                           (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
-                                              const Vec2 e = ring[next_index(i, n)] - ring[i];
-                                              return e.x * along.x + e.y * along.y < 0.0;
-                                            })));
+    const bool use_sp =
+        !kept && (measure == Measure::sp || (is_hybrid && any_from(s, t, n, [&](std::size_t i) {
+                                               const Vec2 e = ring[next_index(i, n)] - ring[i];
+                                               return e.x * along.x + e.y * along.y < 0.0;
+                                             })));
     double pocket_value = sl_max;
     if (use_sp) {
       chain.clear();
@@ -401,7 +429,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       for_each_between(s, t, n, [&](std::size_t i) { result.depth[i] = result.vertex[i]; });
     }
     result.value = std::max(result.value, pocket_value);
-    for_each_between(s, t, n, consider_witness);
+    consider_pocket_witness(s, t, pocket_value);
   });
   settle_found_points();
   return result;
