@@ -166,9 +166,11 @@ using PocketCache = std::unordered_map<PocketKey, PocketPaths, PocketKeyHash>;
 
 // The hull of a ring, using what a hint inherits (see ParentHint). Sets on_hull: 2 for hull
 // vertices, 1 for the parent's points exactly on a hull edge the child keeps; the other points
-// exactly on a hull edge are left to measure_outer.
+// exactly on a hull edge are left to measure_outer. Lists those points in ascending order in
+// hull_points (unless the hull has fewer than 3 vertices).
 std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint,
-                                        std::vector<char>& on_hull) {
+                                        std::vector<char>& on_hull,
+                                        std::vector<std::size_t>& hull_points) {
   const std::size_t n = ring.size();
   // The inherited range [known_first, known_last], both ends parent hull points.
   std::size_t known_first = n, known_last = 0;
@@ -195,15 +197,27 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
   if (hull.size() < 3) return hull;
   on_hull.assign(n, 0);
   for (std::size_t h : hull) on_hull[h] = 2;
+  // The hull runs in ring order (counter-clockwise, as the ring does): from its lowest index on,
+  // its vertices ascend.
+  hull_points.clear();
+  const std::size_t lowest =
+      static_cast<std::size_t>(std::min_element(hull.begin(), hull.end()) - hull.begin());
   for (std::size_t k = 0; k < hull.size(); ++k) {
-    const std::size_t s = hull[k], t = hull[(k + 1) % hull.size()];
+    const std::size_t s = hull[(lowest + k) % hull.size()];
+    const std::size_t t = hull[(lowest + k + 1) % hull.size()];
+    hull_points.push_back(s);
     if (known_first <= s && s < t && t <= known_last) {
       // A parent hull edge (no parent hull vertex between s and t would be missing from the
       // child's hull): its points are the parent's.
-      for (std::size_t i = s + 1; i < t; ++i) on_hull[i] = hint->code[i] == kParentHullPoint;
-      continue;
+      for (std::size_t i = s + 1; i < t; ++i) {
+        if (hint->code[i] == kParentHullPoint) on_hull[i] = 1, hull_points.push_back(i);
+      }
     }
     // Points on a fresh edge are found by measure_outer, which evaluates the same orientations.
+  }
+  // A clockwise ring (not a cleaned outer boundary) has its hull in descending order.
+  if (!std::is_sorted(hull_points.begin(), hull_points.end())) {
+    std::sort(hull_points.begin(), hull_points.end());
   }
   return hull;
 }
@@ -238,16 +252,20 @@ bool any_from(std::size_t s, std::size_t t, std::size_t n, Test&& test) {
   return false;
 }
 
-OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
-                             PocketCache* cache = nullptr, const ParentHint* hint = nullptr) {
+// Measures into result, whose storage is reused: a decomposition measures every component.
+void measure_outer(const Ring& ring, Measure measure, double tau, OuterConcavity& result,
+                   PocketCache* cache = nullptr, const ParentHint* hint = nullptr) {
   const std::size_t n = ring.size();
-  OuterConcavity result;
   result.vertex.assign(n, 0.0);
-  const std::vector<std::size_t> hull = hull_with_hint(ring, hint, result.on_hull);
-  if (hull.size() < 3) return result;
-  std::vector<char>& on_hull = result.on_hull;
+  result.depth.clear();
+  result.value = 0.0;
+  result.witness = kNone;
+  result.on_hull.clear();
   // The hull points in ring order; each pair of consecutive ones with a gap bounds a pocket.
   thread_local std::vector<std::size_t> hull_points;
+  const std::vector<std::size_t> hull = hull_with_hint(ring, hint, result.on_hull, hull_points);
+  if (hull.size() < 3) return;
+  std::vector<char>& on_hull = result.on_hull;
   auto collect_hull_points = [&] {
     hull_points.clear();
     for (std::size_t i = 0; i < n; ++i) {
@@ -324,7 +342,6 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     first_looks.push_back({false, sl_max});
     return found;
   };
-  collect_hull_points();
   bool found_on_edge = false;
   for_each_pocket([&](std::size_t s, std::size_t t) {
     if (measure_straight_line(s, t, true)) found_on_edge = true;
@@ -376,7 +393,7 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
       result.value = std::max(result.value, sl_max);
     });
     settle_found_points();
-    return result;
+    return;
   }
   for_each_pocket([&](std::size_t s, std::size_t t) {
     const Vec2 bs = ring[s], bt = ring[t];
@@ -432,7 +449,6 @@ OuterConcavity measure_outer(const Ring& ring, Measure measure, double tau,
     consider_pocket_witness(s, t, pocket_value);
   });
   settle_found_points();
-  return result;
 }
 
 // Eq. 5 for every hole: antipodal pair from the principal axis, depth through the closest vertex.
@@ -636,7 +652,7 @@ std::vector<HoleConcavity> measure_holes(const Region& region, const OuterConcav
   const std::size_t k = region.holes.size();
   std::vector<HoleConcavity> holes(k);
   const double delta = outer.value;
-  ends.resize(k);
+  ends.assign(k, HoleEnds{});
   std::size_t searches = 0;
   for (std::size_t h = 0; h < k; ++h) {
     HoleEnds& hole_ends = ends[h];
@@ -1396,11 +1412,14 @@ struct Evaluation {
   int deepest_hole = -1;
 };
 
-Evaluation evaluate(const Region& region, Measure measure, double tau, PocketCache* cache = nullptr,
-                    const ParentHint* hint = nullptr) {
-  Evaluation e;
-  e.outer = measure_outer(region.outer, measure, tau, cache, hint);
+// Evaluates into e, whose storage is reused (see measure_outer).
+void evaluate(const Region& region, Measure measure, double tau, Evaluation& e,
+              PocketCache* cache = nullptr, const ParentHint* hint = nullptr) {
+  measure_outer(region.outer, measure, tau, e.outer, cache, hint);
   e.value = e.outer.value;
+  e.holes.clear();
+  e.hole_ends.clear();
+  e.deepest_hole = -1;
   if (!region.holes.empty()) {
     static const std::vector<HoleEnds> kNothingInherited;
     e.holes =
@@ -1412,7 +1431,6 @@ Evaluation evaluate(const Region& region, Measure measure, double tau, PocketCac
     }
     e.value = std::max(e.value, e.holes[std::size_t(e.deepest_hole)].value);
   }
-  return e;
 }
 
 // Visits items in the order of before (a strict total order) until accept takes one, without
@@ -1727,11 +1745,15 @@ Piece make_piece(const Region& component, double concavity) {
 }  // namespace
 
 double measure_concavity(const Region& region, Measure measure, double tau) {
-  return evaluate(region, measure, tau).value;
+  Evaluation e;
+  evaluate(region, measure, tau, e);
+  return e.value;
 }
 
 std::vector<double> outer_vertex_concavity(const Ring& outer, Measure measure, double tau) {
-  return measure_outer(outer, measure, tau).vertex;
+  OuterConcavity result;
+  measure_outer(outer, measure, tau, result);
+  return result.vertex;
 }
 
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings) {
@@ -1754,13 +1776,13 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   PocketCache cache;
   PocketCache* const pocket_cache = inherits_values(settings) ? nullptr : &cache;
   std::vector<ParentHint> hints(1);  // per node
+  Evaluation e;                      // of the node at hand; its storage is reused
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
     // Valid until the children are appended below (nodes_ may then reallocate).
     const Region& component = tree.nodes_[std::size_t(id)].component;
-    const Evaluation e =
-        evaluate(component, settings.measure, settings.tau, pocket_cache, &hints[std::size_t(id)]);
+    evaluate(component, settings.measure, settings.tau, e, pocket_cache, &hints[std::size_t(id)]);
     hints[std::size_t(id)] = ParentHint();
     std::pair<ParentHint, ParentHint> child_hints;
     tree.nodes_[std::size_t(id)].concavity = e.value;
