@@ -3,6 +3,7 @@
 #include "hullcook/core/clean.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/predicates.h"
+#include "length_inline.h"
 #include "pocket_paths.h"
 #include "predicates_inline.h"
 
@@ -44,7 +45,7 @@ namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
-double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double distance(Vec2 a, Vec2 b) { return detail::length(b - a); }
 
 // Ring index steps without a division (i < n).
 std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
@@ -326,7 +327,7 @@ void measure_outer(const Ring& ring, Measure measure, double tau, OuterConcavity
     const bool inherits_cut = measure == Measure::sl && code != kFresh;
     const Vec2 bs = ring[s], bt = ring[t];
     const Vec2 along = bt - bs;
-    const double length = std::hypot(along.x, along.y);
+    const double length = detail::length(along);
     bool found = false;
     double sl_max = 0.0;
     for_each_between(s, t, n, [&](std::size_t i) {
@@ -483,7 +484,7 @@ std::pair<std::size_t, std::size_t> principal_axis_extremes(const Ring& hole) {
   return {low, high};
 }
 
-// Squared distances decide which vertices need the exact (hypot) distance: a vertex whose squared
+// Squared distances decide which vertices need the exact distance: a vertex whose squared
 // distance exceeds the smallest seen by this relative margin cannot be the closest (rounding is a
 // few ulps), provided no square overflows or loses precision to underflow.
 constexpr double kSquaredMargin = 1.0 + 1e-9;
@@ -1456,105 +1457,55 @@ bool scores_before(const ScoredVertex& u, const ScoredVertex& v) {
   return u.score != v.score ? u.score > v.score : u.index < v.index;
 }
 
-// The first candidate, in the order of exact(index) scores, that accept takes: the best scored
-// of all it takes. The candidates come with provisional scores within 1e-9 (relative) of the exact
-// ones, so the best exact score known is final once it beats every provisional score left by more
-// than that: exact() runs on a few candidates only.
+// The first candidate, in the order of scores, that accept takes: the best scored of all it
+// takes.
 // A search refused by its first few candidates is usually refused by all (a hole vertex that sees
 // no vertex of ∂P0), and refusals do not depend on the order: the rest is then searched unsorted,
 // skipping the candidates that cannot beat the best one taken.
 // A quick search (quick_tests > 0) gives up instead, after refusals by its first quick_tests
 // candidates in order, and sets *gave_up; what it does return is what the full search returns.
-// Whether a candidate of this provisional score may score better than best once scored exactly:
-// provisional scores are within 1e-9 (relative) of the exact ones. The bound grows with the
-// provisional score.
-bool may_beat(double provisional_score, const ScoredVertex& best) {
-  return !(best.score > provisional_score + std::abs(provisional_score) * 1e-9);
-}
-
-template <typename Exact, typename Accept>
-std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& provisional,
-                                                   Exact&& exact, Accept&& accept,
-                                                   std::size_t quick_tests = 0,
+template <typename Accept>
+std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& candidates,
+                                                   Accept&& accept, std::size_t quick_tests = 0,
                                                    bool* gave_up = nullptr) {
   auto after = [](const ScoredVertex& u, const ScoredVertex& v) { return scores_before(v, u); };
-  std::make_heap(provisional.begin(), provisional.end(), after);
-  std::vector<ScoredVertex> scored;
-  auto end = provisional.end();
-  for (std::size_t tests_in_order = quick_tests > 0 ? quick_tests : 16 + provisional.size() / 32;
-       tests_in_order > 0; --tests_in_order) {
-    while (end != provisional.begin()) {
-      if (!scored.empty() && !may_beat(provisional.front().score, scored.front())) break;
-      std::pop_heap(provisional.begin(), end, after);
-      --end;
-      scored.push_back({exact(end->index), end->index});
-      std::push_heap(scored.begin(), scored.end(), after);
-    }
-    if (scored.empty()) return std::nullopt;
-    std::pop_heap(scored.begin(), scored.end(), after);
-    const ScoredVertex best = scored.back();
-    scored.pop_back();
-    if (accept(best.index)) return best.index;
+  std::make_heap(candidates.begin(), candidates.end(), after);
+  auto end = candidates.end();
+  for (std::size_t tests_in_order = quick_tests > 0 ? quick_tests : 16 + candidates.size() / 32;
+       tests_in_order > 0 && end != candidates.begin(); --tests_in_order) {
+    std::pop_heap(candidates.begin(), end, after);
+    --end;
+    if (accept(end->index)) return end->index;
   }
+  if (end == candidates.begin()) return std::nullopt;
   if (quick_tests > 0) {
     if (gave_up) *gave_up = true;
     return std::nullopt;
   }
-  std::optional<ScoredVertex> best;
-  for (const ScoredVertex& candidate : scored) {
-    if ((!best || scores_before(candidate, *best)) && accept(candidate.index)) best = candidate;
-  }
   // Heap order: the higher scores, likelier to prune the rest, come first.
-  for (auto it = provisional.begin(); it != end; ++it) {
-    if (best && !may_beat(it->score, *best)) continue;
-    if (!accept(it->index)) continue;
-    const ScoredVertex candidate{exact(it->index), it->index};
-    if (!best || scores_before(candidate, *best)) best = candidate;
+  const ScoredVertex* best = nullptr;
+  for (auto it = candidates.begin(); it != end; ++it) {
+    if ((!best || scores_before(*it, *best)) && accept(it->index)) best = &*it;
   }
   if (!best) return std::nullopt;
   return best->index;
-}
-
-// |b - a| by sqrt: within a few ulps of distance(a, b) (hypot), or exactly it where squaring
-// could overflow or underflow.
-double provisional_distance(Vec2 a, Vec2 b) {
-  const Vec2 offset = b - a;
-  const double squared = offset.x * offset.x + offset.y * offset.y;
-  return squared > 1e-280 && squared < 1e280 ? std::sqrt(squared) : distance(a, b);
 }
 
 // first_accepted_by_score where the best scored candidate is usually taken (a hole's searches,
 // and a notch's cut, whose best diagonal by Eq. 8 was valid at every split we counted on the
 // Nazca models): one pass finds it without ordering the rest; if it is refused, the full search
 // runs.
-template <typename Exact, typename Accept>
-std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& provisional,
-                                                  Exact&& exact, Accept&& accept,
-                                                  std::size_t quick_tests = 0,
+template <typename Accept>
+std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& candidates,
+                                                  Accept&& accept, std::size_t quick_tests = 0,
                                                   bool* gave_up = nullptr) {
-  if (provisional.empty()) return std::nullopt;
-  // A candidate that may_beat refuses scores strictly lower; its bound grows with the provisional
-  // score, so the runner-up refused settles every other candidate.
-  const ScoredVertex* top = &provisional[0];
-  double runner_up = -std::numeric_limits<double>::infinity();
-  for (const ScoredVertex& candidate : provisional) {
-    if (scores_before(candidate, *top)) {
-      runner_up = std::max(runner_up, top->score);
-      top = &candidate;
-    } else if (&candidate != top) {
-      runner_up = std::max(runner_up, candidate.score);
-    }
+  if (candidates.empty()) return std::nullopt;
+  const ScoredVertex* top = &candidates[0];
+  for (const ScoredVertex& candidate : candidates) {
+    if (scores_before(candidate, *top)) top = &candidate;
   }
-  ScoredVertex best{exact(top->index), top->index};
-  if (provisional.size() > 1 && may_beat(runner_up, best)) {
-    for (const ScoredVertex& candidate : provisional) {
-      if (&candidate == top || !may_beat(candidate.score, best)) continue;
-      const ScoredVertex scored{exact(candidate.index), candidate.index};
-      if (scores_before(scored, best)) best = scored;
-    }
-  }
-  if (accept(best.index)) return best.index;
-  return first_accepted_by_score(provisional, exact, accept, quick_tests, gave_up);
+  if (accept(top->index)) return top->index;
+  return first_accepted_by_score(candidates, accept, quick_tests, gave_up);
 }
 
 // Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
@@ -1575,8 +1526,8 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   };
   // The reflex angle's bisector, for diagonals that can only reduce the notch.
   Vec2 in_a = a - pr, in_b = b - pr;
-  in_a /= std::hypot(in_a.x, in_a.y);
-  in_b /= std::hypot(in_b.x, in_b.y);
+  in_a /= detail::length(in_a);
+  in_b /= detail::length(in_b);
   Vec2 bisector = -(in_a + in_b);
   if (bisector.x == 0.0 && bisector.y == 0.0) bisector = {in_a.y, -in_a.x};
   const std::size_t after_r = next_index(r, n), before_r = prev_index(r, n);
@@ -1587,7 +1538,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   resolving.resize(n);
   std::size_t resolving_count = 0;
   auto take = [&](std::size_t i) {
-    resolving[resolving_count++] = {eq8(i, provisional_distance(pr, ring[i])), i};
+    resolving[resolving_count++] = {eq8(i, distance(pr, ring[i])), i};
   };
   // resolves() by the static filter alone (as in melkman_steps: a call in the loop would keep its
   // registers on the stack); the few vertices it leaves undecided are tested after, exactly. The
@@ -1625,8 +1576,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return region.holes.empty() ? is_diagonal_of_outer(view, ring, r, i)
                                 : view.is_diagonal({0, r}, {0, i});
   };
-  if (const auto chosen = best_accepted_by_score(
-          resolving, [&](std::size_t i) { return eq8(i, distance(pr, ring[i])); }, is_valid)) {
+  if (const auto chosen = best_accepted_by_score(resolving, is_valid)) {
     return split_outer(region, r, *chosen, concavity, inherits_values(settings), hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
@@ -1674,12 +1624,11 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     // Nearest first: the scores are negated distances.
     std::vector<ScoredVertex> candidates(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
-      candidates[i] = {-provisional_distance(outer[i], hole[p]), i};
+      candidates[i] = {-distance(outer[i], hole[p]), i};
     }
     bool gave_up = false;
     const auto chosen = best_accepted_by_score(
-        candidates, [&](std::size_t i) { return -distance(outer[i], hole[p]); },
-        [&](std::size_t i) { return sees(p, i); }, quick_tests, &gave_up);
+        candidates, [&](std::size_t i) { return sees(p, i); }, quick_tests, &gave_up);
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
   };
   auto best_second = [&](std::size_t p, std::size_t x, std::size_t q,
@@ -1690,11 +1639,11 @@ std::optional<std::pair<Region, Region>> resolve_hole(const Region& region, cons
     std::vector<ScoredVertex> candidates;
     candidates.reserve(outer.size());
     for (std::size_t i = 0; i < outer.size(); ++i) {
-      if (i != x) candidates.push_back({eq8(i, provisional_distance(outer[i], hole[q])), i});
+      if (i != x) candidates.push_back({eq8(i, distance(outer[i], hole[q])), i});
     }
     bool gave_up = false;
     const auto chosen = best_accepted_by_score(
-        candidates, [&](std::size_t i) { return eq8(i, distance(outer[i], hole[q])); },
+        candidates,
         [&](std::size_t i) {
           return sees(q, i) && !segments_intersect(hole[p], outer[x], hole[q], outer[i]);
         },

@@ -1,5 +1,6 @@
 #include "pocket_paths.h"
 
+#include "length_inline.h"
 #include "triangulate.h"
 
 #include "hullcook/core/predicates.h"
@@ -140,7 +141,7 @@ void funnel_paths(const std::vector<Vec2>& q, const Bridge& bridge, double* dist
     } else {
       const Vec2 d = pw - point(predecessor);
       distance[static_cast<std::size_t>(w)] =
-          distance[static_cast<std::size_t>(predecessor)] + std::hypot(d.x, d.y);
+          distance[static_cast<std::size_t>(predecessor)] + detail::length(d);
     }
     const int right_triangle = b_follows_w ? after_w : before_w;  // across (w, b)
     const int left_triangle = b_follows_w ? before_w : after_w;   // across (a, w)
@@ -164,7 +165,7 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
   if (q.size() < 3) return distance;
   const Vec2 s = q.front();
   const Vec2 along = q.back() - s;
-  const double length = std::hypot(along.x, along.y);
+  const double length = detail::length(along);
   const Bridge bridge{s, along, {-along.y / length, along.x / length}};
   auto depth = [&](Vec2 p) {  // as the funnel takes it from a vertex that sees the bridge
     const Vec2 d = p - s;
