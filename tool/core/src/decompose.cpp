@@ -203,9 +203,10 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
   hull_points.clear();
   const std::size_t lowest =
       static_cast<std::size_t>(std::min_element(hull.begin(), hull.end()) - hull.begin());
-  for (std::size_t k = 0; k < hull.size(); ++k) {
-    const std::size_t s = hull[(lowest + k) % hull.size()];
-    const std::size_t t = hull[(lowest + k + 1) % hull.size()];
+  for (std::size_t step = 0, k = lowest; step < hull.size(); ++step) {
+    const std::size_t s = hull[k];
+    k = next_index(k, hull.size());
+    const std::size_t t = hull[k];
     hull_points.push_back(s);
     if (known_first <= s && s < t && t <= known_last) {
       // A parent hull edge (no parent hull vertex between s and t would be missing from the
