@@ -1469,20 +1469,33 @@ template <typename Accept>
 std::optional<std::size_t> first_accepted_by_score(std::vector<ScoredVertex>& candidates,
                                                    Accept&& accept, std::size_t quick_tests = 0,
                                                    bool* gave_up = nullptr) {
+  if (quick_tests > 0) {
+    // The best few in order, by one pass that keeps them sorted: a quick search that gives up
+    // (a walled-in hole vertex, several per decomposition of the neuron) then orders no others.
+    thread_local std::vector<ScoredVertex> best_few;
+    best_few.clear();
+    for (const ScoredVertex& candidate : candidates) {
+      if (best_few.size() == quick_tests && !scores_before(candidate, best_few.back())) continue;
+      best_few.insert(std::upper_bound(best_few.begin(), best_few.end(), candidate, scores_before),
+                      candidate);
+      if (best_few.size() > quick_tests) best_few.pop_back();
+    }
+    for (const ScoredVertex& candidate : best_few) {
+      if (accept(candidate.index)) return candidate.index;
+    }
+    if (best_few.size() < candidates.size() && gave_up) *gave_up = true;
+    return std::nullopt;
+  }
   auto after = [](const ScoredVertex& u, const ScoredVertex& v) { return scores_before(v, u); };
   std::make_heap(candidates.begin(), candidates.end(), after);
   auto end = candidates.end();
-  for (std::size_t tests_in_order = quick_tests > 0 ? quick_tests : 16 + candidates.size() / 32;
+  for (std::size_t tests_in_order = 16 + candidates.size() / 32;
        tests_in_order > 0 && end != candidates.begin(); --tests_in_order) {
     std::pop_heap(candidates.begin(), end, after);
     --end;
     if (accept(end->index)) return end->index;
   }
   if (end == candidates.begin()) return std::nullopt;
-  if (quick_tests > 0) {
-    if (gave_up) *gave_up = true;
-    return std::nullopt;
-  }
   // Heap order: the higher scores, likelier to prune the rest, come first.
   const ScoredVertex* best = nullptr;
   for (auto it = candidates.begin(); it != end; ++it) {
