@@ -132,6 +132,14 @@ struct ParentHint {
   std::size_t chain_hole = kNone, chain_first = 0;
   // Per hole of the child, what it keeps of its parent's HoleEnds (see inherit_hole_ends).
   std::vector<HoleEnds> hole_ends;
+
+  // Back to nothing inherited, keeping the vectors' storage for the next child's hint.
+  void reset() {
+    code.clear(), value.clear(), hull_candidates.clear(), hole_source.clear(), hole_ends.clear();
+    known_first = known_last = 0, start = kNone;
+    source_first = from_parent = 0;
+    chain_hole = kNone, chain_first = 0;
+  }
 };
 
 bool is_notch(const Ring& ring, std::size_t i) {
@@ -1166,20 +1174,20 @@ void distribute_holes(const Region& region, std::size_t cut_hole, std::pair<Regi
 // parent's vertex (source_first + k) % parent.on_hull.size(); the rest (a hole's chain) lie inside
 // the parent, so off its hull and outside its pockets. The parent's values are inherited unless
 // with_values is false.
-ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, std::size_t size,
-                      std::size_t from_parent, bool with_values) {
-  ParentHint hint;
+void child_hint(const OuterConcavity& parent, std::size_t source_first, std::size_t size,
+                std::size_t from_parent, bool with_values, ParentHint& hint) {
+  hint.reset();
   hint.source_first = source_first, hint.from_parent = from_parent;
   const std::vector<char>& parent_on_hull = parent.on_hull;
   const std::size_t n = parent_on_hull.size();
-  if (n == 0) return hint;
+  if (n == 0) return;
   // The child's vertex k is the parent's vertex source(k).
   auto source = [&](std::size_t k) {
     return source_first + k < n ? source_first + k : source_first + k - n;
   };
   std::size_t known_first = 0;
   while (known_first < from_parent && !parent_on_hull[source(known_first)]) ++known_first;
-  if (known_first == from_parent) return hint;
+  if (known_first == from_parent) return;
   std::size_t known_last = from_parent - 1;
   while (!parent_on_hull[source(known_last)]) --known_last;
   // The child's ends (from its last parent hull point round to its first) are fresh, unless both
@@ -1230,7 +1238,6 @@ ParentHint child_hint(const OuterConcavity& parent, std::size_t source_first, st
                       parent.vertex.begin() + std::ptrdiff_t(from_parent - before_wrap));
     hint.value.resize(size);
   }
-  return hint;
 }
 
 // H2's values depend on τ where a pocket is deeper than it: its children measure afresh.
@@ -1246,11 +1253,11 @@ std::pair<Region, Region> split_outer(const Region& region, std::size_t i, std::
   Region& first = pieces.first;
   Region& second = pieces.second;
   const std::size_t first_source = cut_chain(ring, i, j, first.outer);
-  hints.first =
-      child_hint(parent, first_source, first.outer.size(), first.outer.size(), with_values);
+  child_hint(parent, first_source, first.outer.size(), first.outer.size(), with_values,
+             hints.first);
   const std::size_t second_source = cut_chain(ring, j, i, second.outer);
-  hints.second =
-      child_hint(parent, second_source, second.outer.size(), second.outer.size(), with_values);
+  child_hint(parent, second_source, second.outer.size(), second.outer.size(), with_values,
+             hints.second);
   distribute_holes(region, kNone, pieces, hints);
   return pieces;
 }
@@ -1303,10 +1310,11 @@ void close_without_degeneracies(Ring& out) {
 
 // The hint of a piece cut by split_hole: its ring starts with the outer chain from `from` to `to`,
 // less the vertices the seams removed, then runs along the hole.
-ParentHint hole_piece_hint(const Ring& outer, const OuterConcavity& parent, bool with_values,
-                           std::size_t from, std::size_t to, const Ring& piece) {
+void hole_piece_hint(const Ring& outer, const OuterConcavity& parent, bool with_values,
+                     std::size_t from, std::size_t to, const Ring& piece, ParentHint& hint) {
   const std::size_t n = outer.size();
-  if (piece.empty() || parent.on_hull.size() != n) return ParentHint();
+  hint.reset();
+  if (piece.empty() || parent.on_hull.size() != n) return;
   std::size_t first = from, chain = (to + n - from) % n + 1;
   while (chain > 0 && outer[first] != piece[0]) first = next_index(first, n), --chain;
   std::size_t from_parent = 0;
@@ -1314,8 +1322,8 @@ ParentHint hole_piece_hint(const Ring& outer, const OuterConcavity& parent, bool
          piece[from_parent] == outer[(first + from_parent) % n]) {
     ++from_parent;
   }
-  if (from_parent == 0) return ParentHint();
-  return child_hint(parent, first, piece.size(), from_parent, with_values);
+  if (from_parent == 0) return;
+  child_hint(parent, first, piece.size(), from_parent, with_values, hint);
 }
 
 // Cuts along hole[p]-outer[x] and hole[q]-outer[y] (x != y): two pieces without that hole. Fills
@@ -1334,12 +1342,12 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   append_without_degeneracies(outer, x, y, first.outer);
   append_without_degeneracies(hole, q, p, first.outer);
   close_without_degeneracies(first.outer);
-  hints.first = hole_piece_hint(outer, parent, with_values, x, y, first.outer);
+  hole_piece_hint(outer, parent, with_values, x, y, first.outer, hints.first);
   second.outer.reserve((x + n - y) % n + (q + m - p) % m + 2);
   append_without_degeneracies(outer, y, x, second.outer);
   append_without_degeneracies(hole, p, q, second.outer);
   close_without_degeneracies(second.outer);
-  hints.second = hole_piece_hint(outer, parent, with_values, y, x, second.outer);
+  hole_piece_hint(outer, parent, with_values, y, x, second.outer, hints.second);
   hints.first.chain_hole = hints.second.chain_hole = h;
   hints.first.chain_first = q, hints.second.chain_first = p;
   distribute_holes(region, h, pieces, hints);
@@ -1740,16 +1748,25 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   PocketCache* const pocket_cache = inherits_values(settings) ? nullptr : &cache;
   std::vector<ParentHint> hints(1);  // per node
   Evaluation e;                      // of the node at hand; its storage is reused
+  std::vector<ParentHint> spare_hints;
+  auto take_spare_hint = [&] {
+    if (spare_hints.empty()) return ParentHint();
+    ParentHint hint = std::move(spare_hints.back());
+    spare_hints.pop_back();
+    return hint;
+  };
   while (!pending.empty()) {
     const int id = pending.back();
     pending.pop_back();
     // Valid until the children are appended below (nodes_ may then reallocate).
     const Region& component = tree.nodes_[std::size_t(id)].component;
     evaluate(component, settings.measure, settings.tau, e, pocket_cache, &hints[std::size_t(id)]);
+    // The node's hint is spent: its storage serves the hints of the next children made.
+    spare_hints.push_back(std::move(hints[std::size_t(id)]));
     hints[std::size_t(id)] = ParentHint();
-    std::pair<ParentHint, ParentHint> child_hints;
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;
+    std::pair<ParentHint, ParentHint> child_hints{take_spare_hint(), take_spare_hint()};
     std::optional<std::pair<Region, Region>> parts;
     Witness witness;
     if (e.deepest_hole >= 0 && e.holes[std::size_t(e.deepest_hole)].value > settings.tau) {
