@@ -176,14 +176,13 @@ using PocketCache = std::unordered_map<PocketKey, PocketPaths, PocketKeyHash>;
 // The hull of a ring, using what a hint inherits (see ParentHint). Sets on_hull: 2 for hull
 // vertices, 1 for the parent's points exactly on a hull edge the child keeps; the other points
 // exactly on a hull edge are left to measure_outer. Lists those points in ascending order in
-// hull_points (unless the hull has fewer than 3 vertices).
-std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint,
-                                        std::vector<char>& on_hull,
-                                        std::vector<std::size_t>& hull_points) {
+// hull_points. False (nothing set) when the hull has fewer than 3 vertices.
+bool hull_with_hint(const Ring& ring, const ParentHint* hint, std::vector<char>& on_hull,
+                    std::vector<std::size_t>& hull_points) {
   const std::size_t n = ring.size();
   // The inherited range [known_first, known_last], both ends parent hull points.
   std::size_t known_first = n, known_last = 0;
-  std::vector<std::size_t> hull;
+  thread_local std::vector<std::size_t> hull;
   if (hint && hint->code.size() == n) {
     thread_local Ring points;
     const std::vector<std::size_t>& candidates = hint->hull_candidates;
@@ -194,16 +193,16 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
     if (candidates.size() * 10 < n * 9) {
       points.clear();
       for (std::size_t k : candidates) points.push_back(ring[k]);
-      hull = simple_polygon_hull_indices(points, start);
+      simple_polygon_hull_indices(points, start, hull);
       for (std::size_t& h : hull) h = candidates[h];
     } else {
       // Little to skip: not worth the copy.
-      hull = simple_polygon_hull_indices(ring, start == kNone ? kNone : candidates[start]);
+      simple_polygon_hull_indices(ring, start == kNone ? kNone : candidates[start], hull);
     }
   } else {
-    hull = simple_polygon_hull_indices(ring);
+    simple_polygon_hull_indices(ring, kNone, hull);
   }
-  if (hull.size() < 3) return hull;
+  if (hull.size() < 3) return false;
   on_hull.assign(n, 0);
   for (std::size_t h : hull) on_hull[h] = 2;
   // The hull runs in ring order (counter-clockwise, as the ring does): from its lowest index on,
@@ -229,7 +228,7 @@ std::vector<std::size_t> hull_with_hint(const Ring& ring, const ParentHint* hint
   if (!std::is_sorted(hull_points.begin(), hull_points.end())) {
     std::sort(hull_points.begin(), hull_points.end());
   }
-  return hull;
+  return true;
 }
 
 // Calls visit(i) for the vertices strictly between s and t, going forward round a ring of n (plain
@@ -273,8 +272,7 @@ void measure_outer(const Ring& ring, Measure measure, double tau, OuterConcavity
   result.on_hull.clear();
   // The hull points in ring order; each pair of consecutive ones with a gap bounds a pocket.
   thread_local std::vector<std::size_t> hull_points;
-  const std::vector<std::size_t> hull = hull_with_hint(ring, hint, result.on_hull, hull_points);
-  if (hull.size() < 3) return;
+  if (!hull_with_hint(ring, hint, result.on_hull, hull_points)) return;
   std::vector<char>& on_hull = result.on_hull;
   auto collect_hull_points = [&] {
     hull_points.clear();

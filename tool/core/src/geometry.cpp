@@ -190,9 +190,13 @@ bool melkman_steps(const Ring& ring, std::size_t first, std::vector<std::size_t>
 
 }  // namespace
 
-std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t first) {
+void simple_polygon_hull_indices(const Ring& ring, std::size_t first,
+                                 std::vector<std::size_t>& hull) {
   const std::size_t n = ring.size();
-  if (n < 4) return convex_hull_indices(ring);
+  if (n < 4) {
+    hull = convex_hull_indices(ring);
+    return;
+  }
   if (first >= n) {
     // Start at the lowest-x (then lowest-y) vertex: a hull vertex.
     first = 0;
@@ -206,7 +210,10 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   auto point = [&](std::size_t index) { return ring[index]; };
   const int start_turn =
       detail::fast_orientation(ring[vertex(0)], ring[vertex(1)], ring[vertex(2)]);
-  if (start_turn == 0) return convex_hull_indices(ring);
+  if (start_turn == 0) {
+    hull = convex_hull_indices(ring);
+    return;
+  }
   // Kept per thread: decompositions take the hull of every component, and a fresh buffer of
   // this size is an mmap and munmap for large rings.
   thread_local std::vector<std::size_t> deque;
@@ -226,8 +233,7 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
   }
   // Drop any vertex left collinear (a chain may double back along a hull edge), keeping the
   // counter-clockwise order.
-  std::vector<std::size_t> hull;
-  hull.reserve(top - bottom);
+  hull.clear();
   for (std::size_t k = bottom; k < top; ++k) {
     const std::size_t index = deque[k];
     while (hull.size() >= 2 && detail::fast_orient2d(point(hull[hull.size() - 2]),
@@ -248,11 +254,19 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
       changed = true;
     }
   }
-  if (hull.size() < 3) return convex_hull_indices(ring);
+  if (hull.size() < 3) {
+    hull = convex_hull_indices(ring);
+    return;
+  }
   const auto lowest = std::min_element(hull.begin(), hull.end(), [&](std::size_t a, std::size_t b) {
     return ring[a].x != ring[b].x ? ring[a].x < ring[b].x : ring[a].y < ring[b].y;
   });
   std::rotate(hull.begin(), lowest, hull.end());
+}
+
+std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex) {
+  std::vector<std::size_t> hull;
+  simple_polygon_hull_indices(ring, hull_vertex, hull);
   return hull;
 }
 

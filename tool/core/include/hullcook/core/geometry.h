@@ -29,6 +29,9 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring);
 // The same, for a caller that knows a vertex of the hull (an extreme point): the scan starts there
 // instead of searching for one. A hull_vertex out of range (>= ring.size()) is searched for.
 std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex);
+// The same, into hull, whose storage is reused: for a caller that takes many hulls.
+void simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex,
+                                 std::vector<std::size_t>& hull);
 
 enum class Location { outside, boundary, inside };
 
