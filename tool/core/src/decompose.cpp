@@ -418,20 +418,25 @@ void measure_outer(const Ring& ring, Measure measure, double tau, OuterConcavity
                                              })));
     double pocket_value = sl_max;
     if (use_sp) {
-      chain.clear();
-      chain.push_back(ring[s]);
-      for_each_between(s, t, n, [&](std::size_t i) { chain.push_back(ring[i]); });
-      chain.push_back(ring[t]);
+      // The chain s..t, wrapping round the ring's end at most once.
+      const auto from = ring.begin() + std::ptrdiff_t(s), to = ring.begin() + std::ptrdiff_t(t);
+      if (s < t) {
+        chain.assign(from, to + 1);
+      } else {
+        chain.assign(from, ring.end());
+        chain.insert(chain.end(), ring.begin(), to + 1);
+      }
       const std::vector<double>* cached = nullptr;
-      std::vector<double> computed;
+      thread_local std::vector<double> computed;
       if (cache) {
         const auto [entry, added] = cache->try_emplace({bs.x, bs.y, bt.x, bt.y, (t + n - s) % n});
         if (added || entry->second.chain != chain) {
-          entry->second = {chain, detail::shortest_paths_to_bridge(chain)};
+          entry->second.chain = chain;
+          detail::shortest_paths_to_bridge(chain, entry->second.paths);
         }
         cached = &entry->second.paths;
       } else {
-        computed = detail::shortest_paths_to_bridge(chain);
+        detail::shortest_paths_to_bridge(chain, computed);
       }
       const std::vector<double>& paths = cached ? *cached : computed;
       // A shortest path is never shorter than the straight line (§5.1), but the two are rounded
@@ -442,13 +447,20 @@ void measure_outer(const Ring& ring, Measure measure, double tau, OuterConcavity
       if (keep_sl && result.depth.empty()) result.depth = result.vertex;
       double sp_max = 0.0;
       std::size_t k = 1;
-      for_each_between(s, t, n, [&](std::size_t i) {
-        const double path = std::max(paths[k], result.vertex[i]);
-        sp_max = std::max(sp_max, path);
-        if (!keep_sl) result.vertex[i] = path;
-        if (!result.depth.empty()) result.depth[i] = path;
-        ++k;
-      });
+      if (keep_sl || !result.depth.empty()) {
+        for_each_between(s, t, n, [&](std::size_t i) {
+          const double path = std::max(paths[k++], result.vertex[i]);
+          sp_max = std::max(sp_max, path);
+          if (!keep_sl) result.vertex[i] = path;
+          if (!result.depth.empty()) result.depth[i] = path;
+        });
+      } else {
+        for_each_between(s, t, n, [&](std::size_t i) {
+          const double path = std::max(paths[k++], result.vertex[i]);
+          sp_max = std::max(sp_max, path);
+          result.vertex[i] = path;
+        });
+      }
       pocket_value = sp_max;
     } else if (!result.depth.empty()) {
       for_each_between(s, t, n, [&](std::size_t i) { result.depth[i] = result.vertex[i]; });

@@ -159,10 +159,10 @@ void funnel_paths(const std::vector<Vec2>& q, const Bridge& bridge, double* dist
 
 }  // namespace
 
-std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
+void shortest_paths_to_bridge(const std::vector<Vec2>& q, std::vector<double>& distance) {
   const std::size_t m = q.size() - 1;
-  std::vector<double> distance(q.size(), 0.0);
-  if (q.size() < 3) return distance;
+  distance.assign(q.size(), 0.0);
+  if (q.size() < 3) return;
   const Vec2 s = q.front();
   const Vec2 along = q.back() - s;
   const double length = detail::length(along);
@@ -225,7 +225,6 @@ std::vector<double> shortest_paths_to_bridge(const std::vector<Vec2>& q) {
     if (!(u[i] > u[i - 1] + margin)) forward = false;
   }
   measure_part(0, part_end, forward);
-  return distance;
 }
 
 }  // namespace hullcook::detail
