@@ -663,11 +663,13 @@ bool triangulate_by_sweep(const std::vector<Vec2>& polygon,
                                        neighbours ? *neighbours : scratch.own_neighbours, scratch);
 }
 
-constexpr std::size_t kEarClippingBelow = 12;
+constexpr std::size_t kEarClippingBelow = 32;
 
 void triangulate(const std::vector<Vec2>& polygon, std::vector<std::array<int, 3>>& triangles,
                  std::vector<std::array<int, 3>>* neighbours) {
-  // Small polygons (most pockets) clip faster than the sweep sorts and builds its status.
+  // Small polygons (most pockets, and the parts the shortest paths cut them into) clip faster
+  // than the sweep sorts and builds its status: on the neuron's parts of 12 to 31 vertices, a
+  // quarter fewer cycles; from 32 on, the sweep is as fast or faster.
   if (polygon.size() < kEarClippingBelow) {
     triangulate_by_ear_clipping(polygon, triangles, neighbours);
     return;
