@@ -1773,7 +1773,6 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     evaluate(component, settings.measure, settings.tau, e, pocket_cache, &hints[std::size_t(id)]);
     // The node's hint is spent: its storage serves the hints of the next children made.
     spare_hints.push_back(std::move(hints[std::size_t(id)]));
-    hints[std::size_t(id)] = ParentHint();
     tree.nodes_[std::size_t(id)].concavity = e.value;
     if (!(e.value > settings.tau)) continue;
     std::pair<ParentHint, ParentHint> child_hints{take_spare_hint(), take_spare_hint()};

@@ -20,6 +20,12 @@ struct Bridge {
   Vec2 s;
   Vec2 along;   // t - s
   Vec2 normal;  // into the pocket
+
+  // The distance from p to the bridge's line [units]: the path of a vertex that sees the bridge.
+  double depth(Vec2 p) const {
+    const Vec2 d = p - s;
+    return d.x * normal.x + d.y * normal.y;
+  }
 };
 
 // Shortest paths from q[1..m-1] to the segment (q[0], q[m]), a part of bridge's line, inside the
@@ -27,7 +33,7 @@ struct Bridge {
 // that a part of a pocket measures as the whole pocket does.
 void funnel_paths(const std::vector<Vec2>& q, const Bridge& bridge, double* distance) {
   const int m = static_cast<int>(q.size()) - 1;
-  const Vec2 s = bridge.s, along = bridge.along, normal = bridge.normal;
+  const Vec2 along = bridge.along;
   // The polygon q[0..m] runs clockwise; triangulate it reversed (counter-clockwise). The
   // triangulation sweeps along y, and a pocket's chain runs up and down least along its bridge:
   // a bridge closer to horizontal is turned a quarter (exactly, keeping every orientation) so
@@ -136,8 +142,7 @@ void funnel_paths(const std::vector<Vec2>& q, const Bridge& bridge, double* dist
     }
     const int predecessor = f(wrap);
     if (predecessor == kInfinity) {
-      const Vec2 d = pw - s;
-      distance[static_cast<std::size_t>(w)] = d.x * normal.x + d.y * normal.y;
+      distance[static_cast<std::size_t>(w)] = bridge.depth(pw);
     } else {
       const Vec2 d = pw - point(predecessor);
       distance[static_cast<std::size_t>(w)] =
@@ -167,10 +172,6 @@ void shortest_paths_to_bridge(const std::vector<Vec2>& q, std::vector<double>& d
   const Vec2 along = q.back() - s;
   const double length = detail::length(along);
   const Bridge bridge{s, along, {-along.y / length, along.x / length}};
-  auto depth = [&](Vec2 p) {  // as the funnel takes it from a vertex that sees the bridge
-    const Vec2 d = p - s;
-    return d.x * bridge.normal.x + d.y * bridge.normal.y;
-  };
   // Where the chain crosses the perpendicular to the bridge through one of its vertices c only at
   // c, the segment from c to its foot on the bridge is a chord of the pocket, and no shortest path
   // crosses it (one that did would do better going straight to the bridge from the crossing). The
@@ -196,7 +197,7 @@ void shortest_paths_to_bridge(const std::vector<Vec2>& q, std::vector<double>& d
   // The part from cut `from` to cut `to`.
   auto measure_part = [&](std::size_t from, std::size_t to, bool forward) {
     if (forward) {
-      for (std::size_t i = from + 1; i < to; ++i) distance[i] = depth(q[i]);
+      for (std::size_t i = from + 1; i < to; ++i) distance[i] = bridge.depth(q[i]);
       return;
     }
     part.clear();
@@ -214,10 +215,10 @@ void shortest_paths_to_bridge(const std::vector<Vec2>& q, std::vector<double>& d
   bool forward = u[m] > u[m - 1] + margin;
   for (std::size_t i = m - 1; i > 0; --i) {
     const bool cut = before_max[i - 1] + margin < u[i] && u[i] + margin < after_min &&
-                     depth(q[i]) > margin / length;
+                     bridge.depth(q[i]) > margin / length;
     if (cut) {
       measure_part(i, part_end, forward);
-      distance[i] = depth(q[i]);
+      distance[i] = bridge.depth(q[i]);
       part_end = i;
       forward = true;
     }
