@@ -1,5 +1,6 @@
 #include "cut.h"
 
+#include "hullcook/core/geometry.h"
 #include "predicates_inline.h"
 
 #include <algorithm>
@@ -45,15 +46,19 @@ std::size_t cut_chain(const Ring& ring, std::size_t first, std::size_t last, Rin
 // cuts do not touch lies strictly inside the region and off the cuts, so inside exactly one
 // piece: its first vertex is located in the smaller ring only, by locate_point's crossing count
 // without its test for a point on each edge, for all the holes in one pass.
+// A piece cut between two holes (other_cut_hole) keeps the region's outer ring: the holes are
+// located in the other piece's ring, the one between the two holes (search_first_only).
 void distribute_holes(const Region& region, std::size_t cut_hole, std::pair<Region, Region>& pieces,
-                      std::pair<ParentHint, ParentHint>& hints) {
-  const bool search_first = pieces.first.outer.size() <= pieces.second.outer.size();
+                      std::pair<ParentHint, ParentHint>& hints, std::size_t other_cut_hole = kNone,
+                      bool search_first_only = false) {
+  const bool search_first =
+      search_first_only || pieces.first.outer.size() <= pieces.second.outer.size();
   const Ring& ring = search_first ? pieces.first.outer : pieces.second.outer;
   // An edge a-b crosses the horizontal line through p where min(a.y, b.y) <= p.y < max(a.y, b.y):
   // the holes' first vertices by height find the few that an edge crosses.
   std::vector<std::pair<double, std::size_t>> by_height;
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
-    if (o != cut_hole) by_height.emplace_back(region.holes[o][0].y, o);
+    if (o != cut_hole && o != other_cut_hole) by_height.emplace_back(region.holes[o][0].y, o);
   }
   std::sort(by_height.begin(), by_height.end());
   std::vector<char> inside(region.holes.size(), 0);
@@ -68,7 +73,7 @@ void distribute_holes(const Region& region, std::size_t cut_hole, std::pair<Regi
     }
   }
   for (std::size_t o = 0; o < region.holes.size(); ++o) {
-    if (o == cut_hole) continue;
+    if (o == cut_hole || o == other_cut_hole) continue;
     const bool in_first = (inside[o] != 0) == search_first;
     (in_first ? pieces.first : pieces.second).holes.push_back(region.holes[o]);
     (in_first ? hints.first : hints.second).hole_source.push_back(o);
@@ -258,6 +263,37 @@ std::pair<Region, Region> split_hole(const Region& region, std::size_t h, std::s
   return pieces;
 }
 
+// Cuts along hole[p]-other[u] and hole[q]-other[v] between two holes (p != q, u != v): the piece
+// between the cuts, and the region with the two holes and that piece merged into one hole. The
+// two rings the cuts close are each a chain of either hole in its own (clockwise) order: the
+// piece's runs counter-clockwise, the merged hole's clockwise. The outer ring is kept whole, so the
+// remainder inherits its measure; nullopt when the rings do not come out as one of each.
+std::optional<std::pair<Region, Region>> split_between_holes(
+    const Region& region, std::size_t h, std::size_t p, std::size_t q, std::size_t other,
+    std::size_t u, std::size_t v, const OuterConcavity& parent, bool with_values,
+    std::pair<ParentHint, ParentHint>& hints) {
+  const Ring& hole = region.holes[h];
+  const Ring& across = region.holes[other];
+  Ring between, merged;
+  append_without_degeneracies(hole, p, q, between);
+  append_without_degeneracies(across, v, u, between);
+  close_without_degeneracies(between);
+  append_without_degeneracies(hole, q, p, merged);
+  append_without_degeneracies(across, u, v, merged);
+  close_without_degeneracies(merged);
+  if (between.size() < 3 || merged.size() < 3) return std::nullopt;
+  if (!(signed_area(between) > 0.0 && signed_area(merged) < 0.0)) return std::nullopt;
+  std::pair<Region, Region> pieces;
+  hints.first.reset();
+  child_hint(parent, 0, region.outer.size(), region.outer.size(), with_values, hints.second);
+  pieces.first.outer = std::move(between);
+  pieces.second.outer = region.outer;
+  distribute_holes(region, h, pieces, hints, other, true);
+  pieces.second.holes.push_back(std::move(merged));
+  hints.second.hole_source.push_back(kNone);
+  return pieces;
+}
+
 // What a piece keeps of its parent's HoleEnds (see ParentHint::hole_ends): a hole keeps its
 // antipodal pair, and the vertex nearest to an end where the piece keeps that vertex and no other
 // vertex was as near. The piece's vertices are some of the parent's, so none is nearer.
@@ -268,7 +304,8 @@ void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent
   }
   std::vector<int> ring_in_piece(parent.holes.size() + 1, -1);  // by the parent's ring id
   for (std::size_t c = 0; c < piece.holes.size(); ++c) {
-    ring_in_piece[hint.hole_source[c] + 1] = static_cast<int>(c + 1);
+    if (hint.hole_source[c] != kNone)
+      ring_in_piece[hint.hole_source[c] + 1] = static_cast<int>(c + 1);
   }
   const std::size_t n = parent.outer.size();
   // On the piece's outer ring at k, if it is there: a piece's vertices are distinct.
@@ -307,6 +344,10 @@ void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent
   };
   hint.hole_ends.resize(piece.holes.size());
   for (std::size_t c = 0; c < piece.holes.size(); ++c) {
+    if (hint.hole_source[c] == kNone) {  // a hole the cuts made: measured afresh
+      hint.hole_ends[c] = HoleEnds{};
+      continue;
+    }
     const HoleEnds& from = parent_ends[hint.hole_source[c]];
     const Ring& hole = piece.holes[c];
     hint.hole_ends[c] = {from.p,

@@ -6,6 +6,7 @@
 //   resolve_notch.cpp    §4, §7 Algorithm 4.2 for a notch of ∂P0: the diagonal by Eq. 8
 //   resolve_hole.cpp     §5.2.3 Algorithm 4.2 for a hole: the cuts that open it
 //   cut.cpp                     cutting a region along those cuts; what each piece inherits
+//   slab_cut.cpp                the cut that always opens a hole, when no diagonal does
 //   sight.h                     which segments are diagonals of a region
 #include "hullcook/core/decompose.h"
 
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace hullcook {
 
@@ -108,15 +110,19 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
         h = std::size_t(e.holes[h].closest_ring - 1);
       }
       parts = resolve_hole(component, e, h, settings, child_hints);
-      for (std::size_t o = 0; !parts && o < component.holes.size(); ++o) {
-        if (o != h) parts = resolve_hole(component, e, o, settings, child_hints), h = o;
-      }
       witness = {component.holes[h][e.holes[h].joined], static_cast<int>(h)};
     } else if (e.outer.witness != kNone) {
       parts = resolve_notch(component, e.outer, e.outer.witness, settings, child_hints);
       witness = {component.outer[e.outer.witness], -1};
     }
-    if (!parts) continue;  // cannot happen on a valid region; keep the node whole
+    // A notch of a simple polygon always has a diagonal, and a hole always a slab cut: a node kept
+    // whole here would break τ silently (issue 16), so it is an internal error instead.
+    if (!parts) {
+      throw std::logic_error(
+          std::string("decompose: no cut resolves the ") + (witness.hole >= 0 ? "hole" : "notch") +
+          " at (" + std::to_string(witness.point.x) + ", " + std::to_string(witness.point.y) +
+          ") of a piece of " + std::to_string(component.outer.size()) + " vertices");
+    }
     if (!component.holes.empty()) {
       inherit_hole_ends(component, e.hole_ends, parts->first, child_hints.first);
       inherit_hole_ends(component, e.hole_ends, parts->second, child_hints.second);

@@ -1,0 +1,192 @@
+// Issue 16: every hole is resolved, whatever its shape and its neighbours. The polygons here
+// defeated the antipodal-pair cuts to ∂P0 (a node was kept whole with its holes, at any τ); each
+// must now decompose within τ under every measure, into pieces without holes and without slivers.
+#include "cut.h"
+#include "decompose_contract.h"
+#include "hullcook/core/clean.h"
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/poly_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace hullcook {
+namespace {
+
+using test::expect_contract;
+using test::kMeasures;
+
+// The issue's reproductions: a square with four diamond holes (1 piece, concavity 28.3 at τ = 1)
+// and a 64x16 UI button whose two holes nearly fill it (1 piece, concavity 15.7).
+constexpr const char* kDiamonds =
+    "5\n4 out\n0 0\n25 0\n25 25\n0 25\n1 2 3 4\n4 in\n7 12\n12 7\n7 2\n2 7\n1 2 3 4\n4 in\n7 23\n"
+    "12 18\n7 13\n2 18\n1 2 3 4\n4 in\n18 12\n23 7\n18 2\n13 7\n1 2 3 4\n4 in\n18 23\n23 18\n18 "
+    "13\n"
+    "13 18\n1 2 3 4\n";
+constexpr const char* kButton =
+    "3\n4 out\n1.4 -6.6\n30.6 -6.6\n30.6 6.6\n1.4 6.6\n1 2 3 4\n12 in\n13.5 6.3\n13.8 2.5\n13.5 "
+    "2.2\n9.8 -1.5\n10.5 -2.2\n13.5 -2.2\n13.8 -2.5\n13.5 -6.3\n2.5 -6.3\n1.7 -5.5\n1.7 5.5\n2.5 "
+    "6.3\n1 2 3 4 5 6 7 8 9 10 11 12\n12 in\n29.5 6.3\n30.3 5.5\n30.3 -5.5\n29.5 -6.3\n18.5 -6.3\n"
+    "18.2 -2.5\n18.5 -2.2\n21.5 -2.2\n21.5 2.2\n18.5 2.2\n18.2 2.5\n18.2 5.5\n1 2 3 4 5 6 7 8 9 10 "
+    "11 12\n";
+
+Ring regular(Vec2 center, double radius, int sides, double turn) {
+  Ring ring;  // clockwise: a hole
+  for (int k = 0; k < sides; ++k) {
+    const double angle = turn - 2 * M_PI * k / sides;
+    ring.push_back(center + radius * Vec2{std::cos(angle), std::sin(angle)});
+  }
+  return ring;
+}
+
+// A rectangle of 4 vertices holding a grid of columns x rows regular holes, `wall` apart, the
+// coordinates rounded to `decimals` (near-collinear vertices on different holes), then scaled and
+// offset.
+Region grid_of_holes(int columns, int rows, int sides, double wall, double turn, int decimals,
+                     double scale, double offset) {
+  const double cell = 10.0, pitch = cell + wall;
+  const double width = wall + columns * pitch, height = wall + rows * pitch;
+  auto place = [&](Vec2 p) {
+    const double unit = std::pow(10.0, decimals);
+    p = {std::round(p.x * unit) / unit, std::round(p.y * unit) / unit};
+    return p * scale + Vec2{offset, offset};
+  };
+  Region region;
+  for (Vec2 p : Ring{{0, 0}, {width, 0}, {width, height}, {0, height}}) {
+    region.outer.push_back(place(p));
+  }
+  // A polygon of `sides` vertices fits its cell when its circumradius is half the cell (squares:
+  // a diamond unless turned).
+  for (int i = 0; i < columns; ++i) {
+    for (int j = 0; j < rows; ++j) {
+      const Vec2 center{wall + i * pitch + cell / 2, wall + j * pitch + cell / 2};
+      Ring hole = regular(center, cell / 2, sides, turn);
+      for (Vec2& p : hole) p = place(p);
+      region.holes.push_back(hole);
+    }
+  }
+  return region;
+}
+
+double bounding_diagonal_squared(const Ring& ring) {
+  double min_x = ring[0].x, max_x = min_x, min_y = ring[0].y, max_y = min_y;
+  for (Vec2 p : ring) {
+    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+  }
+  return (max_x - min_x) * (max_x - min_x) + (max_y - min_y) * (max_y - min_y);
+}
+
+// The contract, and for holes wider than τ: none is kept, and no piece is a sliver.
+void expect_holes_resolved(const Region& region, double tau, Measure measure,
+                           const std::string& what) {
+  const DecompositionTree tree = decompose(region, {tau, measure, 0.1, 1.0});
+  const std::vector<Piece> pieces = tree.pieces_at(tau);
+  expect_contract(region, pieces, tau, measure, what, 200);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Ring& outer = pieces[k].component.outer;
+    EXPECT_TRUE(pieces[k].component.holes.empty()) << what << " piece " << k;
+    EXPECT_GT(std::abs(signed_area(outer)),
+              detail::kSliverAreaFraction * bounding_diagonal_squared(outer))
+        << what << " piece " << k << " is a sliver";
+  }
+}
+
+TEST(Issue16, HolesWithoutAnAntipodalCutToTheBoundaryAreResolved) {
+  for (const auto& [name, text] : {std::pair{"diamonds", kDiamonds}, {"button", kButton}}) {
+    const Region region = clean_and_validate(parse_poly(text, name), name)[0];
+    for (Measure measure : kMeasures) {
+      for (double tau : {0.0, 0.5, 1.0, 4.0}) {
+        expect_holes_resolved(
+            region, tau, measure,
+            std::string(name) + " " + measure_name(measure) + " tau " + std::to_string(tau));
+      }
+    }
+  }
+}
+
+TEST(Issue16, GridsOfHolesAreResolved) {
+  struct Grid {
+    int columns, rows, sides;
+    double wall, turn;
+    int decimals;
+    double scale, offset;
+  };
+  const Grid grids[] = {
+      {6, 6, 4, 1.0, M_PI / 4, 9, 1.0, 0.0},   // square cells, thin frame
+      {6, 5, 4, 0.5, 0.0, 9, 1.0, 0.0},        // diamonds holes next to holes
+      {5, 5, 8, 2.0, M_PI / 8, 9, 1.0, 0.0},   // octagons
+      {4, 4, 16, 1.0, 0.0, 9, 1.0, 0.0},       // round holes
+      {8, 1, 6, 0.5, 0.0, 3, 1.0, 0.0},        // a row of hexagons, rounded coordinates
+      {5, 3, 6, 0.3, 0.1, 3, 1000.0, 1e5},     // turned hexagons, large and offset
+      {5, 4, 4, 4.0, M_PI / 4, 9, 0.01, 1e5},  // tiny and offset
+  };
+  for (const Grid& g : grids) {
+    const Region region = clean_and_validate(
+        {grid_of_holes(g.columns, g.rows, g.sides, g.wall, g.turn, g.decimals, g.scale, g.offset)},
+        "grid")[0];
+    for (Measure measure : {Measure::sl, Measure::h1}) {
+      for (double tau : {0.5, 4.0}) {
+        expect_holes_resolved(region, tau * g.scale, measure,
+                              std::to_string(g.columns) + "x" + std::to_string(g.rows) + " of " +
+                                  std::to_string(g.sides) + "-gons wall " + std::to_string(g.wall) +
+                                  " scale " + std::to_string(g.scale) + " " +
+                                  measure_name(measure) + " tau " + std::to_string(tau));
+      }
+    }
+  }
+}
+
+TEST(Issue16, ThinWallsAndTouchingNeighboursAreResolved) {
+  for (double wall : {0.01, 0.1, 0.3, 1.0, 3.0}) {
+    // A hole `wall` from the boundary on the left, and a second hole `wall` from the first.
+    Region region{{{0, 0}, {30, 0}, {30, 20}, {0, 20}},
+                  {{{wall, 15}, {10, 15}, {10, 5}, {wall, 5}},
+                   {{10 + wall, 18}, {28, 18}, {28, 2}, {10 + wall, 2}}}};
+    region = clean_and_validate({region}, "walls")[0];
+    for (Measure measure : kMeasures) {
+      expect_holes_resolved(region, 1.0, measure,
+                            "wall " + std::to_string(wall) + " " + measure_name(measure));
+    }
+  }
+}
+
+// The cut that always exists, on every hole of regions whose holes see little: the trapezoid is
+// convex, holds no hole, and with the rest partitions the region, which has one hole less (the
+// hole joined to ∂P0, or merged with another).
+TEST(Issue16, SlabCutOpensEveryHole) {
+  const Region regions[] = {
+      clean_and_validate(parse_poly(kDiamonds, "diamonds"), "diamonds")[0],
+      clean_and_validate(parse_poly(kButton, "button"), "button")[0],
+      clean_and_validate({grid_of_holes(3, 3, 6, 0.3, 0.1, 3, 1.0, 0.0)}, "hexagons")[0],
+      clean_and_validate({grid_of_holes(3, 2, 16, 1.0, 0.0, 9, 1000.0, 1e5)}, "circles")[0],
+  };
+  for (const Region& region : regions) {
+    const double area = region_area(region);
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      SCOPED_TRACE("hole " + std::to_string(h));
+      const auto pieces = detail::cut_across_slab(region, h);
+      ASSERT_TRUE(pieces.has_value());
+      const Region& trapezoid = pieces->first;
+      EXPECT_TRUE(trapezoid.holes.empty());
+      ASSERT_GE(trapezoid.outer.size(), 3u);
+      for (std::size_t i = 0, n = trapezoid.outer.size(); i < n; ++i) {
+        EXPECT_GT(orientation(trapezoid.outer[i], trapezoid.outer[(i + 1) % n],
+                              trapezoid.outer[(i + 2) % n]),
+                  0);
+      }
+      EXPECT_FALSE(detail::is_sliver(trapezoid.outer));
+      std::vector<Region> rest;
+      ASSERT_NO_THROW(rest = clean_and_validate({pieces->second}, "rest"));
+      EXPECT_EQ(rest[0].holes.size(), region.holes.size() - 1);
+      EXPECT_NEAR(region_area(trapezoid) + region_area(pieces->second), area, 1e-9 * area);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
