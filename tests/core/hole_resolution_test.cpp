@@ -17,6 +17,7 @@
 namespace hullcook {
 namespace {
 
+using test::check_tree;
 using test::expect_contract;
 using test::kMeasures;
 
@@ -81,12 +82,15 @@ double bounding_diagonal_squared(const Ring& ring) {
   return (max_x - min_x) * (max_x - min_x) + (max_y - min_y) * (max_y - min_y);
 }
 
-// The contract, and for holes wider than τ: none is kept, and no piece is a sliver.
+// The contract, and for holes wider than τ: none is kept, and no piece is a sliver. With
+// whole_tree, every node of the tree holds a fresh measure of its component (the pieces cut
+// between two holes inherit their parent's measure) and every level is a valid decomposition.
 void expect_holes_resolved(const Region& region, double tau, Measure measure,
-                           const std::string& what) {
+                           const std::string& what, bool whole_tree = false) {
   const DecompositionTree tree = decompose(region, {tau, measure, 0.1, 1.0});
   const std::vector<Piece> pieces = tree.pieces_at(tau);
   expect_contract(region, pieces, tau, measure, what, 200);
+  if (whole_tree) check_tree(region, tree, measure, what);
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const Ring& outer = pieces[k].component.outer;
     EXPECT_TRUE(pieces[k].component.holes.empty()) << what << " piece " << k;
