@@ -282,6 +282,8 @@ std::optional<std::pair<Region, Region>> split_between_holes(
   append_without_degeneracies(across, u, v, merged);
   close_without_degeneracies(merged);
   if (between.size() < 3 || merged.size() < 3) return std::nullopt;
+  // Which of the two is the piece depends on which side of the holes p precedes q.
+  if (signed_area(between) < 0.0) std::swap(between, merged);
   if (!(signed_area(between) > 0.0 && signed_area(merged) < 0.0)) return std::nullopt;
   std::pair<Region, Region> pieces;
   hints.first.reset();
