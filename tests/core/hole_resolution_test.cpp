@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -155,6 +156,28 @@ TEST(Issue16, ThinWallsAndTouchingNeighboursAreResolved) {
     for (Measure measure : kMeasures) {
       expect_holes_resolved(region, 1.0, measure,
                             "wall " + std::to_string(wall) + " " + measure_name(measure));
+    }
+  }
+}
+
+// Grids of regular holes whose coordinates were rounded (near-collinear vertices on different
+// holes; found by a random search): cuts passing within rounding of a vertex left spikes of no
+// width and pieces of area 1e-18 to 1e-7 (area / diagonal² down to 2e-16).
+TEST(Issue16, NearCollinearVerticesOnDifferentHolesLeaveNoSliver) {
+  const std::pair<const char*, double> cases[] = {
+      {"issue16_hexagons_rounded_sliver.poly", 0.005},
+      {"issue16_rounded_grid_slivers.poly", 0.005},
+      {"issue16_octagons_rounded_spike.poly", 500.0},
+  };
+  for (const auto& [file, tau] : cases) {
+    const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/core/data" / file;
+    const Region region = read_poly_file(path)[0];
+    for (Measure measure : kMeasures) {
+      for (double t : {0.0, tau}) {
+        expect_holes_resolved(
+            region, t, measure,
+            std::string(file) + " " + measure_name(measure) + " tau " + std::to_string(t));
+      }
     }
   }
 }

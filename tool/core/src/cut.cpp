@@ -361,4 +361,27 @@ void inherit_hole_ends(const Region& parent, const std::vector<HoleEnds>& parent
   }
 }
 
+bool is_sliver(const Ring& ring, std::size_t first, std::size_t last) {
+  const std::size_t n = ring.size();
+  const Vec2 origin = ring[first];
+  Vec2 low{0.0, 0.0}, high{0.0, 0.0}, previous{0.0, 0.0};
+  double twice_area = 0.0;
+  std::size_t count = 1;  // vertices from first to last
+  for (std::size_t i = next_index(first, n);; i = next_index(i, n)) {
+    ++count;
+    const Vec2 p = ring[i] - origin;
+    twice_area += previous.x * p.y - previous.y * p.x;
+    low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    previous = p;
+    if (i == last) break;
+  }
+  if (count < 3) return true;
+  const Vec2 extent = high - low;
+  return !(std::abs(0.5 * twice_area) >
+           kSliverAreaFraction * (extent.x * extent.x + extent.y * extent.y));
+}
+
+bool is_sliver(const Ring& ring) { return ring.size() < 3 || is_sliver(ring, 0, ring.size() - 1); }
+
 }  // namespace hullcook::detail

@@ -39,10 +39,12 @@ std::optional<std::pair<Region, Region>> split_between_holes(
 // candidate's crossings lie within rounding of each other.
 std::optional<std::pair<Region, Region>> cut_across_slab(const Region& region, std::size_t h);
 
-// A piece whose area is below this fraction of its bounding box's squared diagonal is a sliver:
-// the trace of a cut through near-collinear vertices, not a shape (issue 16).
-inline constexpr double kSliverAreaFraction = 1e-9;
+// A piece whose area is below kSliverAreaFraction of its bounding box's squared diagonal is a
+// sliver: the trace of a cut through near-collinear vertices, not a shape (issue 16).
 bool is_sliver(const Ring& ring);
+// The same for the piece that the chain of ring from first to last (cyclic) closes, without
+// building it.
+bool is_sliver(const Ring& ring, std::size_t first, std::size_t last);
 
 // What a piece keeps of its parent's HoleEnds (see ParentHint::hole_ends): a hole keeps its
 // antipodal pair, and the vertex nearest to an end where the piece keeps that vertex and no other

@@ -15,6 +15,10 @@ inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 inline double distance(Vec2 a, Vec2 b) { return length(b - a); }
 
+// A piece whose area is below this fraction of its bounding box's squared diagonal is a sliver
+// (see is_sliver in cut.h).
+inline constexpr double kSliverAreaFraction = 1e-9;
+
 // Ring index steps without a division (i < n).
 inline std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
 inline std::size_t prev_index(std::size_t i, std::size_t n) { return i == 0 ? n - 1 : i - 1; }

@@ -203,7 +203,10 @@ class HoleOpener {
           return split_between_holes(region_, h_, a.p, b.p, other, a.u, b.u, e_.outer,
                                      inherits_values(settings_), hints_);
         };
-        if (auto pieces = make(); pieces && accept(*pieces, make)) return pieces;
+        if (auto pieces = make();
+            pieces && accept(*pieces, {hole_[a.p], across[a.u]}, {hole_[b.p], across[b.u]}, make)) {
+          return pieces;
+        }
       }
     }
     return std::nullopt;
@@ -215,23 +218,32 @@ class HoleOpener {
       return split_hole(region_, h_, p, x, q, y, e_.outer, inherits_values(settings_), hints_);
     };
     std::pair<Region, Region> pieces = make();
-    if (accept(pieces, make)) return pieces;
+    if (accept(pieces, {hole_[p], outer_[x]}, {hole_[q], outer_[y]}, make)) return pieces;
     return std::nullopt;
   }
 
-  // A cut that leaves a sliver (a piece of next to no area: cuts through near-collinear vertices
-  // of different rings, issue 16) is kept only as a last resort; make remakes it.
+  // Cuts that leave a sliver or graze a vertex (through near-collinear vertices of different
+  // rings, issue 16) are kept only as a last resort; make remakes them.
+  using Segment = std::pair<Vec2, Vec2>;
   template <typename Make>
-  bool accept(const std::pair<Region, Region>& pieces, const Make& make) {
-    if (!has_sliver(pieces)) return true;
+  bool accept(const std::pair<Region, Region>& pieces, const Segment& cut, const Segment& other_cut,
+              const Make& make) {
+    if (!has_sliver(pieces) && !view_.grazes_a_vertex(cut.first, cut.second) &&
+        !view_.grazes_a_vertex(other_cut.first, other_cut.second)) {
+      return true;
+    }
     if (!sliver_fallback_) {
       sliver_fallback_ = [make]() -> std::optional<std::pair<Region, Region>> { return make(); };
     }
     return false;
   }
 
+  // The piece with fewer vertices: slivers come from a few near-collinear vertices, and every
+  // hole resolution checks its cut.
   static bool has_sliver(const std::pair<Region, Region>& pieces) {
-    return is_sliver(pieces.first.outer) || is_sliver(pieces.second.outer);
+    const Ring& first = pieces.first.outer;
+    const Ring& second = pieces.second.outer;
+    return is_sliver(first.size() <= second.size() ? first : second);
   }
 
   const Region& region_;

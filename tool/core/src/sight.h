@@ -88,6 +88,39 @@ class RegionView {
   // scans the edges until scans are frequent enough to pay for a grid.
   void expect_many_tests() { expects_many_tests_ = true; }
 
+  // Whether the segment a-b passes within the sliver distance of a vertex other than its ends
+  // (2 kSliverAreaFraction |ab| from the open segment): cut there, it would leave that vertex on
+  // a spike of next to no area (near-collinear vertices of different rings, issue 16).
+  bool grazes_a_vertex(Vec2 a, Vec2 b) {
+    if (chunk_boxes_.empty()) box_chunks();
+    const Vec2 along = b - a;
+    const double squared = along.x * along.x + along.y * along.y;
+    const double grazing = 2.0 * kSliverAreaFraction * squared;
+    // The segment's box, widened so that it holds the vertices that graze it.
+    const double reach = 2.0 * kSliverAreaFraction * (std::abs(along.x) + std::abs(along.y));
+    const double min_x = std::min(a.x, b.x) - reach, max_x = std::max(a.x, b.x) + reach;
+    const double min_y = std::min(a.y, b.y) - reach, max_y = std::max(a.y, b.y) + reach;
+    const ChunkBox* box = chunk_boxes_.data();
+    for (int r = 0; r < ring_count(); ++r) {
+      const Ring& points = ring(r);
+      for (std::size_t first = 0; first < points.size(); first += kEdgesPerChunk, ++box) {
+        if (box->max_x < min_x || box->min_x > max_x || box->max_y < min_y || box->min_y > max_y) {
+          continue;
+        }
+        const std::size_t last = std::min(first + kEdgesPerChunk, points.size());
+        for (std::size_t i = first; i < last; ++i) {
+          const Vec2 offset = points[i] - a;
+          const double projection = offset.x * along.x + offset.y * along.y;
+          if (projection > 0.0 && projection < squared && points[i] != b &&
+              std::abs(along.x * offset.y - along.y * offset.x) <= grazing) {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
  private:
   // Buckets every edge in a uniform grid.
   void index_edges() {

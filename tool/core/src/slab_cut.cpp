@@ -230,16 +230,4 @@ std::optional<std::pair<Region, Region>> cut_across_slab(const Region& region, s
   return std::nullopt;
 }
 
-bool is_sliver(const Ring& ring) {
-  if (ring.size() < 3) return true;
-  double min_x = ring[0].x, max_x = min_x, min_y = ring[0].y, max_y = min_y;
-  for (Vec2 p : ring) {
-    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
-    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
-  }
-  const double diagonal_squared =
-      (max_x - min_x) * (max_x - min_x) + (max_y - min_y) * (max_y - min_y);
-  return !(std::abs(signed_area(ring)) > kSliverAreaFraction * diagonal_squared);
-}
-
 }  // namespace hullcook::detail
