@@ -19,6 +19,29 @@ struct VertexRef {
   std::size_t index;
 };
 
+// A cut a-b grazes a vertex that lies within the sliver distance of the open segment,
+// 2 kSliverAreaFraction |ab| (see is_sliver in cut.h): cut there, it would leave that vertex on a
+// spike of next to no area (near-collinear vertices of different rings, issue 16).
+struct Graze {
+  Graze(Vec2 from, Vec2 to) : a(from), b(to), along(to - from) {
+    squared = along.x * along.x + along.y * along.y;
+    grazing = 2.0 * kSliverAreaFraction * squared;
+    // The segment's box, widened so that it holds the vertices that graze it.
+    const double reach = 2.0 * kSliverAreaFraction * (std::abs(along.x) + std::abs(along.y));
+    min_x = std::min(a.x, b.x) - reach, max_x = std::max(a.x, b.x) + reach;
+    min_y = std::min(a.y, b.y) - reach, max_y = std::max(a.y, b.y) + reach;
+  }
+  // c is not an end of the segment.
+  bool by(Vec2 c) const {
+    const Vec2 offset = c - a;
+    const double projection = offset.x * along.x + offset.y * along.y;
+    return projection > 0.0 && projection < squared &&
+           std::abs(along.x * offset.y - along.y * offset.x) <= grazing;
+  }
+  Vec2 a, b, along;
+  double squared, grazing, min_x, max_x, min_y, max_y;
+};
+
 class RegionView {
  public:
   explicit RegionView(const Region& region) : region_(region) {}
@@ -88,33 +111,21 @@ class RegionView {
   // scans the edges until scans are frequent enough to pay for a grid.
   void expect_many_tests() { expects_many_tests_ = true; }
 
-  // Whether the segment a-b passes within the sliver distance of a vertex other than its ends
-  // (2 kSliverAreaFraction |ab| from the open segment): cut there, it would leave that vertex on
-  // a spike of next to no area (near-collinear vertices of different rings, issue 16).
+  // Whether the segment a-b grazes a vertex other than its ends (see Graze).
   bool grazes_a_vertex(Vec2 a, Vec2 b) {
     if (chunk_boxes_.empty()) box_chunks();
-    const Vec2 along = b - a;
-    const double squared = along.x * along.x + along.y * along.y;
-    const double grazing = 2.0 * kSliverAreaFraction * squared;
-    // The segment's box, widened so that it holds the vertices that graze it.
-    const double reach = 2.0 * kSliverAreaFraction * (std::abs(along.x) + std::abs(along.y));
-    const double min_x = std::min(a.x, b.x) - reach, max_x = std::max(a.x, b.x) + reach;
-    const double min_y = std::min(a.y, b.y) - reach, max_y = std::max(a.y, b.y) + reach;
+    const Graze graze(a, b);
     const ChunkBox* box = chunk_boxes_.data();
     for (int r = 0; r < ring_count(); ++r) {
       const Ring& points = ring(r);
       for (std::size_t first = 0; first < points.size(); first += kEdgesPerChunk, ++box) {
-        if (box->max_x < min_x || box->min_x > max_x || box->max_y < min_y || box->min_y > max_y) {
+        if (box->max_x < graze.min_x || box->min_x > graze.max_x || box->max_y < graze.min_y ||
+            box->min_y > graze.max_y) {
           continue;
         }
         const std::size_t last = std::min(first + kEdgesPerChunk, points.size());
         for (std::size_t i = first; i < last; ++i) {
-          const Vec2 offset = points[i] - a;
-          const double projection = offset.x * along.x + offset.y * along.y;
-          if (projection > 0.0 && projection < squared && points[i] != b &&
-              std::abs(along.x * offset.y - along.y * offset.x) <= grazing) {
-            return true;
-          }
+          if (points[i] != a && points[i] != b && graze.by(points[i])) return true;
         }
       }
     }
