@@ -3,6 +3,7 @@
 #include "edge_index.h"
 
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +93,23 @@ struct Cell {
   bool operator<(const Cell& other) const { return bound < other.bound; }
 };
 
+// The largest distance to s over the part of the triangle on the closed right side of s's line:
+// that part is convex and the distance to a segment is convex, so its vertices (the corners on
+// that side and where the triangle's edges cross the line) bound it.
+double right_side_bound(const Vec2 (&corner)[3], const Segment& s) {
+  double best = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 p = corner[i], q = corner[(i + 1) % 3];
+    const double at_p = orient2d(s.a, s.b, p), at_q = orient2d(s.a, s.b, q);  // > 0: left
+    if (at_p <= 0) best = std::max(best, point_segment_distance(p, s.a, s.b));
+    if ((at_p < 0 && at_q > 0) || (at_p > 0 && at_q < 0)) {
+      const Vec2 crossing = p + (at_p / (at_p - at_q)) * (q - p);
+      best = std::max(best, point_segment_distance(crossing, s.a, s.b));
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>& target,
@@ -118,6 +136,8 @@ FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>
         {std::numeric_limits<double>::infinity(), {domain[0], domain[i], domain[i + 1]}, all});
   }
   std::size_t cells = 0, stop = budget;
+  double farthest_seen = 0;  // the largest distance at a centroid, for a report without proof
+  Vec2 farthest_at = domain[0];
   std::vector<double> distance;
   while (!queue.empty()) {
     // Moving out of the top leaves its bound, all that pop() compares.
@@ -125,6 +145,7 @@ FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>
     queue.pop();
     if (++cells > stop) {
       result.proven = false;
+      if (result.distance <= limit) result.distance = farthest_seen, result.point = farthest_at;
       return result;
     }
     double bound = result.proven ? limit : result.distance;
@@ -144,6 +165,7 @@ FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>
     const bool inside_target = index.covers(c);
     if (inside_target && nearest >= radius) continue;  // the whole cell is in the target
     const double here = inside_target ? 0.0 : nearest;
+    if (here > farthest_seen) farthest_seen = here, farthest_at = c;
     if (here > bound) {
       // A witness; go on a little for the farthest one, to a thousandth of its distance.
       if (result.proven) stop = std::min(budget, cells + kSearchAfterWitness);
@@ -152,6 +174,19 @@ FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>
       bound = here;
     }
     if (here + radius <= bound || radius <= resolution) continue;
+    if (inside_target) {
+      // The target lies left of its segments. A point of the cell outside it is reached from c
+      // by leaving the target across a segment that meets the cell, so it lies right of that
+      // segment's line, within the bound of right_side_bound. Thin slivers between the target and
+      // the domain's edge are proven so at any cell size.
+      double outside = 0;
+      for (std::size_t i = 0; i < cell.segments.size() && outside <= bound; ++i) {
+        if (distance[i] <= radius) {
+          outside = std::max(outside, right_side_bound(cell.corner, segments[cell.segments[i]]));
+        }
+      }
+      if (outside <= bound) continue;
+    }
     bool proven = false;
     for (std::size_t i = 0; i < cell.segments.size() && !proven; ++i) {
       if (distance[i] > bound) continue;

@@ -30,18 +30,21 @@ class ConvexLines {
 
 struct FarthestPoint {
   bool proven = true;   // every point of the domain is within limit of the target
-  double distance = 0;  // the witness's distance to the target (0 when proven or none found)
+  double distance = 0;  // the witness's distance to the target (0 when proven; the farthest
+                        // seen when the budget ran out without a witness)
   Vec2 point{0, 0};     // the witness
 };
 
 // Decides whether every point of the convex polygon domain (counter-clockwise) is within limit of
 // the filled target (regions, holes excluded), by subdividing the domain's fan triangles into
 // four: a triangle is proven by the 1-Lipschitz bound from its centroid, by the convexity of the
-// distance to one target segment (its maximum over the triangle is at a corner), or by lying
-// inside the target; a centroid farther than limit is a witness, and the search goes on a little
-// for the farthest (to a thousandth of its distance). Triangles smaller than resolution are taken
-// as proven (their points are within limit + resolution). Gives up after budget triangles (proven =
-// false, with the farthest witness found if any).
+// distance to one target segment (its maximum over the triangle is at a corner), by lying inside
+// the target, or, with its centroid inside, by bounding the parts of it right of each target
+// segment that meets it (where alone it can leave the target); a centroid farther than limit is a
+// witness, and the search goes on a little for the farthest (to a thousandth of its distance).
+// Triangles smaller than resolution are taken as proven (their points are within limit +
+// resolution). Gives up after budget triangles (proven = false, with the farthest witness found if
+// any).
 FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>& target,
                                    double limit, double resolution, std::size_t budget);
 

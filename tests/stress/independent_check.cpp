@@ -99,6 +99,16 @@ std::optional<Vec2> interior_point(const Region& region) {
   return candidate;
 }
 
+// Why a ring cannot be a component's (fewer than 3 vertices, or not oriented counter-clockwise
+// for an outer ring, clockwise for a hole); empty when it can.
+std::string ring_problem(const Ring& ring, bool outer, const std::string& what) {
+  const double area = signed_area(ring);
+  if (ring.size() >= 3 && (outer ? area > 0 : area < 0)) return "";
+  std::ostringstream text = detail_stream();
+  text << what << " of " << ring.size() << " vertices has signed area " << area;
+  return text.str();
+}
+
 // The hull's shape: strictly convex and counter-clockwise, and its width (the smallest over its
 // edges of the farthest vertex from the edge's line).
 struct HullShape {
@@ -175,10 +185,11 @@ class Checker {
     const Region& component = *pieces_[k].component;
     const Ring& hull = *pieces_[k].hull;
     const std::string name = piece_name(k);
-    bool valid = component.outer.size() >= 3 && signed_area(component.outer) > 0;
-    for (const Ring& hole : component.holes)
-      valid = valid && hole.size() >= 3 && signed_area(hole) < 0;
-    std::string problem = valid ? "" : "a ring with fewer than 3 vertices or the wrong orientation";
+    std::string problem = ring_problem(component.outer, true, "outer ring");
+    for (std::size_t h = 0; h < component.holes.size() && problem.empty(); ++h) {
+      problem = ring_problem(component.holes[h], false, "hole " + std::to_string(h));
+    }
+    bool valid = problem.empty();
     if (valid) {
       try {
         clean_and_validate({component}, name);
@@ -287,7 +298,9 @@ class Checker {
       if (options_.engine) check_hull_to_outline(name, hull);
     } else {
       detail << name << ": no proof in " << options_.subdivision_budget
-             << " triangles that the hull is within tau " << options_.tau << " of the component";
+             << " triangles that the hull is within tau " << options_.tau
+             << " of the component (the farthest point found, " << point_text(far.point) << ", is "
+             << far.distance << " from it)";
       fail("tau.unproven", detail.str());
     }
   }

@@ -155,14 +155,18 @@ TEST(IndependentCheck, APocketFartherThanTauIsFoundBothWays) {
 }
 
 TEST(IndependentCheck, AGrownHullIsMeasuredEverywhere) {
-  const Region region{rectangle({0, 0, 1, 1}), {}};
-  const Output grown{{region}, {{{0, 0}, {3, 0}, {0, 3}}}};  // its far corners 2 away
-  CheckOptions options = at_tau(1.9);
+  // A 16-gon of radius 1 (a vertex at 45 degrees) in a square grown to 1.2 a side from its
+  // centre: the square's corners are farthest, 1.2 sqrt(2) - 1 from that vertex.
+  const Region region{regular_polygon({0, 0}, 1, 16, 0), {}};
+  const Output grown{{region}, {rectangle({-1.2, -1.2, 1.2, 1.2})}};
+  const double farthest = 1.2 * std::sqrt(2.0) - 1;
+  CheckOptions options = at_tau(farthest - 0.01);
   options.exact_hulls = false;
   const CheckReport report = check({region}, grown, options);
-  EXPECT_EQ(report.counts.count("tau.hull_to_component"), 1u) << report.summary();
-  options.tau = 2.01;
-  EXPECT_TRUE(check({region}, grown, options).ok());
+  ASSERT_EQ(report.counts.count("tau.hull_to_component"), 1u) << report.summary();
+  EXPECT_NEAR(stated_distance(report.examples.front().detail), farthest, 1e-3);
+  options.tau = farthest + 1e-6;
+  EXPECT_TRUE(check({region}, grown, options).ok()) << check({region}, grown, options).summary();
   options.subdivision_budget = 1;  // too few triangles to prove it
   EXPECT_EQ(check({region}, grown, options).counts.count("tau.unproven"), 1u);
 }
