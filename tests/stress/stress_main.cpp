@@ -2,9 +2,13 @@
 // with holes (spread over the families), decomposes each under every measure and tolerance asked
 // for and cooks it as a .poly file (engine limits included) at each tolerance above 0, cooks
 // drawn sprites, judges every output with the independent checker, and prints per
-// family the cases, failures and time. Exit 0 when everything passed, 1 on a usage error, 2 when
+// family the cases, failures and time. With --input FILE it judges given files instead: a .poly
+// decomposed and cooked like a generated case, an image cooked like a drawn one (replaying a
+// saved failure through the checker). Exit 0 when everything passed, 1 on a usage error, 2 when
 // a case failed.
 #include "stress_runner.h"
+
+#include "hullcook/core/poly_io.h"
 
 #include <algorithm>
 #include <chrono>
@@ -29,21 +33,24 @@ struct Options {
   std::filesystem::path out = "stress-failures";
   std::size_t show = 5;  // failure messages printed per family
   bool progress = false;
+  bool measures_given = false;
+  std::vector<std::filesystem::path> inputs;  // judge these files instead of generated cases
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "%s\nusage: hullcook_stress [--cases N] [--images N] [--seed S] [--family F]... "
-               "[--measure M]... [--tau T]... [--out DIR] [--show N] [--progress]\n"
-               "families: thin_wall grid row ring star button (polygons), tileset frame "
-               "ui_button one_pixel_walls grid_sheet (images)\n",
-               problem.c_str());
+  std::fprintf(
+      stderr,
+      "%s\nusage: hullcook_stress [--cases N] [--images N] [--seed S] [--family F]... "
+      "[--measure M]... [--tau T]... [--out DIR] [--show N] [--progress] [--input FILE]...\n"
+      "families: thin_wall grid row ring star button (polygons), tileset frame "
+      "ui_button one_pixel_walls grid_sheet (images)\n",
+      problem.c_str());
   std::exit(1);
 }
 
 Options parse(int argc, char** argv) {
   Options options;
-  bool families_given = false, measures_given = false, taus_given = false;
+  bool families_given = false, taus_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -75,8 +82,8 @@ Options parse(int argc, char** argv) {
         usage("--family: unknown family '" + name + "'");
       }
     } else if (arg == "--measure") {
-      if (!measures_given) options.measures.clear();
-      measures_given = true;
+      if (!options.measures_given) options.measures.clear();
+      options.measures_given = true;
       const std::string name = value();
       const std::optional<Measure> measure = parse_measure(name);
       if (!measure) usage("--measure: '" + name + "' is not one of sl, sp, h1, h2");
@@ -93,6 +100,8 @@ Options parse(int argc, char** argv) {
       options.out = value();
     } else if (arg == "--show") {
       options.show = count();
+    } else if (arg == "--input") {
+      options.inputs.emplace_back(value());
     } else if (arg == "--progress") {
       options.progress = true;
     } else if (arg == "-h" || arg == "--help") {
@@ -139,13 +148,68 @@ void print_tally(const std::string& family, const Tally& tally) {
   }
 }
 
+// The cook settings images are judged under: tau 1 and 4 px at 1 px per unit, tau 1 px at 100.
+std::vector<CookCase> image_cooks(const Options& options) {
+  std::vector<CookCase> cooks;
+  for (Measure measure : options.measures_given ? options.measures : std::vector{Measure::h1}) {
+    for (CookCase cook : {CookCase{1.0, 1.0}, CookCase{4.0, 1.0}, CookCase{1.0, 100.0}}) {
+      cook.measure = measure;
+      cooks.push_back(cook);
+    }
+  }
+  return cooks;
+}
+
+// Decomposes regions under every measure and tau, and cooks file at every tau above 0 (engine
+// limits cannot keep a tolerance of 0).
+template <typename Decompose, typename Cook>
+void run_polygon(Tally& tally, const Options& options, Decompose decompose, Cook cook,
+                 bool& failed) {
+  for (Measure measure : options.measures) {
+    for (double tau : options.taus) {
+      record(tally, decompose(measure, tau), options, failed);
+      if (tau > 0) record(tally, cook(CookCase{tau, 1.0, measure}), options, failed);
+    }
+  }
+}
+
+bool run_inputs(const Options& options, Tally& tally) {
+  bool any_failed = false;
+  for (const std::filesystem::path& input : options.inputs) {
+    ++tally.cases;
+    bool failed = false;
+    if (input.extension() == ".poly") {
+      const std::vector<Region> regions = read_poly_file(input);
+      run_polygon(
+          tally, options,
+          [&](Measure measure, double tau) {
+            return run_polygon_case(input.stem().string(), regions, input.string(), measure, tau,
+                                    options.out);
+          },
+          [&](const CookCase& cook) { return run_sprite_case(input, cook); }, failed);
+    } else {
+      for (const CookCase& cook : image_cooks(options)) {
+        record(tally, run_sprite_case(input, cook), options, failed);
+      }
+    }
+    tally.failed_cases += failed;
+    any_failed = any_failed || failed;
+  }
+  return any_failed;
+}
+
 int run(const Options& options) {
   const auto start = std::chrono::steady_clock::now();
   std::map<std::string, Tally> tallies;
   std::vector<std::string> order;
   bool any_failed = false;
+  if (!options.inputs.empty()) {
+    order.push_back("inputs");
+    any_failed = run_inputs(options, tallies["inputs"]);
+  }
   const std::size_t families = std::max<std::size_t>(options.families.size(), 1);
-  for (std::size_t i = 0; i < options.cases && !options.families.empty(); ++i) {
+  for (std::size_t i = 0; i < options.cases && options.inputs.empty() && !options.families.empty();
+       ++i) {
     const Family family = options.families[i % families];
     const std::uint64_t seed = options.seed + i / families;
     const std::string name = family_name(family);
@@ -161,23 +225,20 @@ int run(const Options& options) {
       std::printf("%s seed %llu: %s\n", name.c_str(), static_cast<unsigned long long>(seed),
                   generated.description.c_str());
     bool case_failed = false;
-    for (Measure measure : options.measures) {
-      for (double tau : options.taus) {
-        record(tally, run_polygon_case(generated, measure, tau, options.out), options, case_failed);
-        // Cooking applies the engine limits, which a tolerance of 0 cannot keep.
-        if (tau > 0) {
-          record(tally, run_polygon_cook_case(generated, {tau, 1.0, measure}, options.out), options,
-                 case_failed);
-        }
-      }
-    }
+    run_polygon(
+        tally, options,
+        [&](Measure measure, double tau) {
+          return run_polygon_case(generated, measure, tau, options.out);
+        },
+        [&](const CookCase& cook) { return run_polygon_cook_case(generated, cook, options.out); },
+        case_failed);
     tally.failed_cases += case_failed;
     any_failed = any_failed || case_failed;
   }
   const std::size_t images = options.images.value_or(std::max<std::size_t>(1, options.cases / 20));
-  const CookCase cooks[] = {
-      {1.0, 1.0, Measure::h1}, {4.0, 1.0, Measure::h1}, {1.0, 100.0, Measure::h1}};
-  for (ImageFamily family : options.image_families) {
+  const std::vector<CookCase> cooks = image_cooks(options);
+  for (ImageFamily family :
+       options.inputs.empty() ? options.image_families : std::vector<ImageFamily>{}) {
     const std::string name = image_family_name(family);
     order.push_back(name);
     Tally& tally = tallies[name];
@@ -203,8 +264,8 @@ int run(const Options& options) {
   std::printf(", tau");
   for (double tau : options.taus) std::printf(" %g", tau);
   std::printf(
-      "; polygons also cooked at each tau > 0; images cooked (h1) at tau 1 and 4 px and "
-      "at tau 1 px with 100 px per unit\n");
+      "; polygons also cooked at each tau > 0; images cooked at tau 1 and 4 px and at tau 1 px "
+      "with 100 px per unit\n");
   for (const std::string& name : order) print_tally(name, tallies[name]);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -218,5 +279,10 @@ int run(const Options& options) {
 }  // namespace hullcook::stress
 
 int main(int argc, char** argv) {
-  return hullcook::stress::run(hullcook::stress::parse(argc, argv));
+  try {
+    return hullcook::stress::run(hullcook::stress::parse(argc, argv));
+  } catch (const std::exception& error) {  // an unreadable --input, an unwritable --out
+    std::fprintf(stderr, "hullcook_stress: %s\n", error.what());
+    return 1;
+  }
 }
