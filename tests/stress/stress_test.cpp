@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -30,6 +31,15 @@
 #endif
 
 namespace hullcook::stress {
+
+// Test names and failures print the parameters by name.
+void PrintTo(Family family, std::ostream* out) { *out << family_name(family); }
+void PrintTo(ImageFamily family, std::ostream* out) { *out << image_family_name(family); }
+void PrintTo(const CookCase& cook, std::ostream* out) {
+  *out << "tau " << cook.tau_px << ", ppu " << cook.pixels_per_unit << ", "
+       << measure_name(cook.measure);
+}
+
 namespace {
 
 #ifdef HULLCOOK_STRESS_SANITIZED
