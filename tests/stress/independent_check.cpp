@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace hullcook::stress {
@@ -50,13 +51,6 @@ void for_each_edge(const Region& region, Visit visit) {
   };
   ring_edges(region.outer);
   for (const Ring& hole : region.holes) ring_edges(hole);
-}
-
-double boundary_distance(const Region& region, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  for_each_edge(region,
-                [&](Vec2 a, Vec2 b) { best = std::min(best, point_segment_distance(p, a, b)); });
-  return best;
 }
 
 // Two segments cross at one point interior to both, and not merely within eps of touching: the
@@ -335,26 +329,58 @@ class Checker {
 
   void check_partition();
 
-  // Components k and other overlap: an edge of one clearly crosses an edge of the other, or a
-  // vertex, an edge's midpoint or the inside point of one lies clearly inside the other.
-  bool overlapping(std::size_t k, std::size_t other,
+  // The edges of piece k in a grid, built when first needed.
+  EdgeIndex& piece_index(std::size_t k) {
+    if (!piece_indexes_[k]) {
+      piece_indexes_[k] = std::make_unique<EdgeIndex>(std::vector<Region>{*pieces_[k].component});
+    }
+    return *piece_indexes_[k];
+  }
+
+  // p is within eps of an edge of index.
+  bool near_boundary(EdgeIndex& index, Vec2 p) const {
+    Bounds box;
+    box.add(p - Vec2{eps(), eps()});
+    box.add(p + Vec2{eps(), eps()});
+    for (std::size_t e : index.near(box)) {
+      if (point_segment_distance(p, index.edge(e).a, index.edge(e).b) <= eps()) return true;
+    }
+    return false;
+  }
+
+  // p lies inside piece k, farther than eps from its boundary.
+  bool clearly_inside(std::size_t k, const Bounds& bounds, Vec2 p) {
+    return bounds.contains(p) && piece_index(k).locate(0, p) == Location::inside &&
+           !near_boundary(piece_index(k), p);
+  }
+
+  // Pieces k and other overlap: an edge of one clearly crosses an edge of the other, or a vertex,
+  // an edge's midpoint or the inside point of one lies clearly inside the other. Only the edges
+  // in the common part of their boxes can.
+  bool overlapping(std::size_t k, std::size_t other, const std::vector<Bounds>& bounds,
                    const std::vector<std::optional<Vec2>>& inner) {
-    const Region& a = *pieces_[k].component;
-    const Region& b = *pieces_[other].component;
-    auto clearly_inside = [&](const Region& region, Vec2 p) {
-      return locate_point(region, p) == Location::inside && boundary_distance(region, p) > eps();
-    };
+    Bounds common;
+    common.add(Vec2{std::max(bounds[k].low.x, bounds[other].low.x),
+                    std::max(bounds[k].low.y, bounds[other].low.y)});
+    common.add(Vec2{std::min(bounds[k].high.x, bounds[other].high.x),
+                    std::min(bounds[k].high.y, bounds[other].high.y)});
     bool found = false;
-    for_each_edge(a, [&](Vec2 p, Vec2 q) {
-      if (found) return;
-      found = clearly_inside(b, p) || clearly_inside(b, (p + q) * 0.5);
-      for_each_edge(b, [&](Vec2 c, Vec2 d) { found = found || cross_clearly(p, q, c, d, eps()); });
-    });
-    for_each_edge(b, [&](Vec2 p, Vec2 q) {
-      found = found || clearly_inside(a, p) || clearly_inside(a, (p + q) * 0.5);
-    });
-    return found || (inner[k] && clearly_inside(b, *inner[k])) ||
-           (inner[other] && clearly_inside(a, *inner[other]));
+    auto visit = [&](std::size_t from, std::size_t into) {
+      for_each_edge(*pieces_[from].component, [&](Vec2 p, Vec2 q) {
+        const Bounds edge = bounds_of(p, q);
+        if (found || !edge.overlaps(common)) return;
+        found = clearly_inside(into, bounds[into], p) ||
+                clearly_inside(into, bounds[into], (p + q) * 0.5);
+        for (std::size_t e : piece_index(into).near(edge)) {
+          const EdgeIndex::Edge& crossing = piece_index(into).edge(e);
+          found = found || cross_clearly(p, q, crossing.a, crossing.b, eps());
+        }
+      });
+    };
+    visit(k, other);
+    visit(other, k);
+    return found || (inner[k] && clearly_inside(other, bounds[other], *inner[k])) ||
+           (inner[other] && clearly_inside(k, bounds[k], *inner[other]));
   }
 
   const std::vector<Region>& regions_;
@@ -363,6 +389,7 @@ class Checker {
   CheckReport report_;
   double diagonal_ = 0;
   double rounding_ = 0;
+  std::vector<std::unique_ptr<EdgeIndex>> piece_indexes_;
 };
 
 void Checker::check_partition() {
@@ -405,12 +432,11 @@ void Checker::check_partition() {
            piece_name(k) + ": its inside " + point_text(*inner[k]) + " is in no region");
       continue;
     }
-    const Region& region = regions_[*home];
     bool outside = false;
     for_each_edge(component, [&](Vec2 a, Vec2 b) {
       for (Vec2 p : {a, (a + b) * 0.5}) {
         if (outside || index.locate(*home, p) != Location::outside) continue;
-        if (boundary_distance(region, p) <= eps()) continue;
+        if (near_boundary(index, p)) continue;
         outside = true;
         fail("partition.outside",
              piece_name(k) + ": point " + point_text(p) + " is outside its region");
@@ -429,11 +455,12 @@ void Checker::check_partition() {
 
   // No two components overlap: no clear crossing of their edges, no vertex and no inside point of
   // one clearly inside the other.
+  piece_indexes_.resize(pieces_.size());
   BoxGrid grid(piece_bounds);
   for (std::size_t k = 0; k < pieces_.size(); ++k) {
     for (std::size_t other : grid.query(piece_bounds[k])) {
       if (other <= k) continue;
-      if (overlapping(k, other, inner)) {
+      if (overlapping(k, other, piece_bounds, inner)) {
         fail("partition.overlap", piece_name(k) + " and " + piece_name(other) + " overlap");
       }
     }
