@@ -42,7 +42,7 @@ std::string cook_label(const std::string& name, const CookCase& settings) {
          ", ppu " + number(settings.pixels_per_unit);
 }
 
-CaseOutcome cook_and_check(const std::filesystem::path& image, const CookCase& settings) {
+CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& settings) {
   CaseOutcome outcome;
   Settings cook_settings;
   cook_settings.tau = Tolerance{settings.tau_px, false};
@@ -51,7 +51,7 @@ CaseOutcome cook_and_check(const std::filesystem::path& image, const CookCase& s
   cook_settings.threads = 1;
   auto start = Clock::now();
   try {
-    const CookResult result = cook({image}, cook_settings);
+    const CookResult result = cook({input}, cook_settings);
     outcome.run_ms = milliseconds_since(start);
     start = Clock::now();
     for (const CookedAsset& asset : result.assets) {
@@ -175,7 +175,7 @@ CaseOutcome run_image_case(const DrawnImage& image, const CookCase& settings,
 CaseOutcome run_sprite_case(const std::filesystem::path& sprite, const CookCase& settings) {
   CaseOutcome outcome = cook_file(
       sprite, [] {}, sprite.filename().string(), settings);
-  outcome.description = "sample sprite";
+  outcome.description = "given file";
   return outcome;
 }
 

@@ -59,7 +59,7 @@ CaseOutcome run_polygon_cook_case(const GeneratedCase& generated, const CookCase
 CaseOutcome run_image_case(const DrawnImage& image, const CookCase& settings,
                            const std::filesystem::path& failure_dir);
 
-// Cooks an image file (a real sprite) and checks the cooked asset.
+// Cooks a file as given (a real sprite, a saved .poly) and checks the cooked asset.
 CaseOutcome run_sprite_case(const std::filesystem::path& sprite, const CookCase& settings);
 
 // The contract of a cooked asset's finest level: the regions partitioned by the components, each
