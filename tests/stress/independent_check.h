@@ -1,8 +1,7 @@
 // The referee of the stress tests (issue 16): checks a decomposition's or a cook's output against
-// the contract without calling the decomposer's measures. Only the exact predicates, the point
-// location, the convex hull and the input validator of hullcook::core are used, and each is a
-// different code path from the decomposer's (it takes hulls by Melkman's scan and measures pockets
-// by its own bookkeeping).
+// the contract without calling the decomposer's measures. From hullcook::core it uses only the
+// exact predicates, point location, signed areas, the input validator and convex_hull (a sorting
+// hull; the decomposer takes its hulls by Melkman's scan, simple_polygon_hull_indices).
 //
 // Rules (the ids name them in reports):
 //  component.invalid        a component is not a valid region (outer CCW, holes CW, simple,
@@ -31,12 +30,13 @@
 // Distances are proven, not sampled: a component's boundary inside its convex hull is at most
 // the concave function min over the hull's edge lines, maximised exactly along each edge; a hull
 // point's distance to the component is bounded over each pocket by the pocket's depth below its
-// bridge's line and, where that bound is not enough, by subdividing with the 1-Lipschitz distance
-// and the convexity of the distance to one segment.
+// bridge's line and, where that bound is not enough (and for hulls grown by the engine limits),
+// by subdividing the hull (distance_bounds.h).
 //
 // Tolerance: every comparison allows eps = 1e-9 x the input's diagonal + 8 ulp of its largest
-// coordinate (rounding of the coordinates themselves); the areas allow 1e-9 x the area plus that
-// rounding times the components' perimeters.
+// coordinate (rounding of the coordinates themselves); the subdivision takes triangles smaller
+// than eps as proven (so a hull point is within tau + 2 eps); the areas allow 1e-9 x the area
+// plus that rounding times the components' perimeters.
 #pragma once
 
 #include "hullcook/core/polygon.h"
