@@ -1,0 +1,192 @@
+#include "stress_runner.h"
+
+#include "hullcook/cook/constrain.h"
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/poly_io.h"
+
+#include <chrono>
+#include <exception>
+#include <fstream>
+#include <sstream>
+
+namespace hullcook::stress {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void write_file(const std::filesystem::path& path, const std::string& bytes) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path, std::ios::binary);
+  file << bytes;
+  if (!file) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+std::string number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+std::string cook_replay(const std::filesystem::path& input, const CookCase& settings) {
+  return "hullcook cook " + input.string() + " --tau " + number(settings.tau_px) + " --ppu " +
+         number(settings.pixels_per_unit) + " --measure " + measure_name(settings.measure) +
+         " -o cooked.json";
+}
+
+std::string cook_label(const std::string& name, const CookCase& settings) {
+  return name + ", cook " + measure_name(settings.measure) + ", tau " + number(settings.tau_px) +
+         ", ppu " + number(settings.pixels_per_unit);
+}
+
+CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& settings) {
+  CaseOutcome outcome;
+  Settings cook_settings;
+  cook_settings.tau = Tolerance{settings.tau_px, false};
+  cook_settings.pixels_per_unit = settings.pixels_per_unit;
+  cook_settings.measure = measure_name(settings.measure);
+  cook_settings.threads = 1;
+  auto start = Clock::now();
+  try {
+    const CookResult result = cook({input}, cook_settings);
+    outcome.run_ms = milliseconds_since(start);
+    start = Clock::now();
+    for (const CookedAsset& asset : result.assets) {
+      outcome.pieces += asset.pieces.size();
+      const CheckReport report = check_cooked_asset(asset, cook_settings.max_verts,
+                                                    cook_settings.weld.value_or(kDefaultWeld));
+      for (const auto& [rule, count] : report.counts) outcome.report.counts[rule] += count;
+      outcome.report.examples.insert(outcome.report.examples.end(), report.examples.begin(),
+                                     report.examples.end());
+      outcome.report.eps = report.eps;
+    }
+    outcome.check_ms = milliseconds_since(start);
+  } catch (const std::exception& error) {
+    outcome.error = error.what();
+  }
+  return outcome;
+}
+
+}  // namespace
+
+std::string CaseOutcome::message() const {
+  std::ostringstream text;
+  text << label << " [" << description << "]: ";
+  if (!error.empty()) text << "threw: " << error << "; ";
+  text << report.summary();
+  if (!saved.empty()) text << "\n  saved: " << saved.string() << "\n  replay: " << replay;
+  return text.str();
+}
+
+CaseOutcome run_polygon_case(const GeneratedCase& generated, Measure measure, double tau,
+                             const std::filesystem::path& failure_dir) {
+  const std::string family = family_name(generated.family);
+  CaseOutcome outcome =
+      run_polygon_case(family + "-" + std::to_string(generated.seed), generated.regions,
+                       generated.description, measure, tau, failure_dir);
+  outcome.label = family + " seed " + std::to_string(generated.seed) + ", " +
+                  measure_name(measure) + ", tau " + number(tau);
+  return outcome;
+}
+
+CaseOutcome run_polygon_case(const std::string& name, const std::vector<Region>& regions,
+                             const std::string& description, Measure measure, double tau,
+                             const std::filesystem::path& failure_dir) {
+  CaseOutcome outcome;
+  outcome.label = name + ", " + measure_name(measure) + ", tau " + number(tau);
+  outcome.description = description;
+  std::vector<Piece> pieces;
+  auto start = Clock::now();
+  try {
+    for (const Region& region : regions) {
+      std::vector<Piece> part = decompose(region, {tau, measure, 0.1, 1.0}).pieces_at(tau);
+      for (Piece& piece : part) pieces.push_back(std::move(piece));
+    }
+  } catch (const std::exception& error) {
+    outcome.error = error.what();
+  }
+  outcome.run_ms = milliseconds_since(start);
+  outcome.pieces = pieces.size();
+  if (outcome.error.empty()) {
+    start = Clock::now();
+    std::vector<CheckedPiece> checked;
+    for (const Piece& piece : pieces) checked.push_back({&piece.component, &piece.hull});
+    CheckOptions options;
+    options.tau = tau;
+    outcome.report = check_pieces(regions, checked, options);
+    outcome.check_ms = milliseconds_since(start);
+  }
+  if (!outcome.ok()) {
+    outcome.saved = failure_dir / (name + ".poly");
+    write_file(outcome.saved, format_poly(regions));
+    outcome.replay = "hullcook decompose " + outcome.saved.string() + " --tau " + number(tau) +
+                     " --measure " + measure_name(measure);
+  }
+  return outcome;
+}
+
+// Writes input (write may do nothing for a file that is given), cooks and checks it; the input
+// is removed again when the case passes, unless it was there before (a failure's, kept).
+template <typename Write>
+CaseOutcome cook_file(const std::filesystem::path& input, Write write, const std::string& name,
+                      const CookCase& settings) {
+  const bool existed = std::filesystem::exists(input);
+  write();
+  CaseOutcome outcome = cook_and_check(input, settings);
+  outcome.cooked = true;
+  outcome.label = cook_label(name, settings);
+  if (outcome.ok()) {
+    if (!existed) std::filesystem::remove(input);
+  } else {
+    outcome.saved = input;
+    outcome.replay = cook_replay(input, settings);
+  }
+  return outcome;
+}
+
+CaseOutcome run_polygon_cook_case(const GeneratedCase& generated, const CookCase& settings,
+                                  const std::filesystem::path& failure_dir) {
+  const std::string name =
+      std::string(family_name(generated.family)) + "-" + std::to_string(generated.seed);
+  const std::filesystem::path path = failure_dir / (name + ".poly");
+  CaseOutcome outcome = cook_file(
+      path, [&] { write_file(path, format_poly(generated.regions)); },
+      std::string(family_name(generated.family)) + " seed " + std::to_string(generated.seed),
+      settings);
+  outcome.description = generated.description;
+  return outcome;
+}
+
+CaseOutcome run_image_case(const DrawnImage& image, const CookCase& settings,
+                           const std::filesystem::path& failure_dir) {
+  const std::string family = image_family_name(image.family);
+  const std::filesystem::path path =
+      failure_dir / (family + "-" + std::to_string(image.seed) + ".png");
+  CaseOutcome outcome = cook_file(
+      path, [&] { write_file(path, encode_png(image)); },
+      family + " seed " + std::to_string(image.seed), settings);
+  outcome.description = image.description;
+  return outcome;
+}
+
+CaseOutcome run_sprite_case(const std::filesystem::path& sprite, const CookCase& settings) {
+  CaseOutcome outcome = cook_file(
+      sprite, [] {}, sprite.filename().string(), settings);
+  outcome.description = "given file";
+  return outcome;
+}
+
+CheckReport check_cooked_asset(const CookedAsset& asset, std::size_t max_verts, double weld) {
+  std::vector<CheckedPiece> checked;
+  for (const CookedPiece& piece : asset.pieces) checked.push_back({&piece.component, &piece.hull});
+  CheckOptions options;
+  options.tau = asset.tau;
+  options.exact_hulls = false;
+  options.engine = EngineRules{max_verts, weld, kCollinearFractionOfWeld};
+  return check_pieces(asset.regions, checked, options);
+}
+
+}  // namespace hullcook::stress

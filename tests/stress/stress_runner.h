@@ -1,0 +1,69 @@
+// One stress case run end to end: a generated polygon decomposed, or a drawn (or real) sprite
+// cooked, then judged by the independent checker; a failing input is saved for replay with the
+// `hullcook` command.
+#pragma once
+
+#include "generators.h"
+#include "images.h"
+#include "independent_check.h"
+
+#include "hullcook/cook/asset.h"
+#include "hullcook/core/decompose.h"
+
+#include <filesystem>
+#include <string>
+
+namespace hullcook::stress {
+
+struct CaseOutcome {
+  bool cooked = false;      // cooked (engine limits included), not only decomposed
+  std::string label;        // e.g. "grid seed 17, h1, tau 0.5"
+  std::string description;  // the case's parameters
+  CheckReport report;
+  std::string error;  // what decompose or cook threw, if it did
+  std::size_t pieces = 0;
+  double run_ms = 0;            // decomposing or cooking
+  double check_ms = 0;          // the independent check
+  std::filesystem::path saved;  // the failing input, saved for replay
+  std::string replay;           // the command that replays it
+
+  bool ok() const { return error.empty() && report.ok(); }
+  // Everything a reader needs to reproduce a failure: label, parameters, rules broken, replay.
+  std::string message() const;
+};
+
+// Decomposes every region at tau under measure and checks the pieces. On a failure the regions
+// are saved as failure_dir/NAME.poly.
+CaseOutcome run_polygon_case(const std::string& name, const std::vector<Region>& regions,
+                             const std::string& description, Measure measure, double tau,
+                             const std::filesystem::path& failure_dir);
+
+// The same for a generated case, named FAMILY-SEED.
+CaseOutcome run_polygon_case(const GeneratedCase& generated, Measure measure, double tau,
+                             const std::filesystem::path& failure_dir);
+
+struct CookCase {
+  double tau_px = 1.0;  // --tau, in input units (pixels for images)
+  double pixels_per_unit = 1.0;
+  Measure measure = Measure::h1;
+};
+
+// Writes the case's regions as failure_dir/FAMILY-SEED.poly, cooks that file (with the engine
+// limits, as `hullcook cook` does) and checks the cooked asset; the file is kept only when the
+// case fails.
+CaseOutcome run_polygon_cook_case(const GeneratedCase& generated, const CookCase& settings,
+                                  const std::filesystem::path& failure_dir);
+
+// Writes the image as failure_dir/FAMILY-SEED.png, cooks it and checks the cooked asset; the PNG
+// is kept only when the case fails.
+CaseOutcome run_image_case(const DrawnImage& image, const CookCase& settings,
+                           const std::filesystem::path& failure_dir);
+
+// Cooks a file as given (a real sprite, a saved .poly) and checks the cooked asset.
+CaseOutcome run_sprite_case(const std::filesystem::path& sprite, const CookCase& settings);
+
+// The contract of a cooked asset's finest level: the regions partitioned by the components, each
+// within tau of its hull, the hulls within tau of the outline and within the engine's rules.
+CheckReport check_cooked_asset(const CookedAsset& asset, std::size_t max_verts, double weld);
+
+}  // namespace hullcook::stress
