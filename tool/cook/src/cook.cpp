@@ -3,6 +3,7 @@
 #include "hullcook/cook/cook.h"
 
 #include "hullcook/cook/constrain.h"
+#include "hullcook/cook/contract.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
@@ -365,6 +366,9 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
     finer.tau = tau;
     return to_cooked(decompose(component, finer).pieces_at(tau));
   };
+  // Every level is checked before the asset is returned, so that a broken one stops the cook
+  // before anything is written.
+  std::vector<std::string> violations;
   for (double tau : level_taus) {
     std::vector<Piece> pieces = decomposer.pieces_at(tau);
     CookedLevel level{tau, {}};
@@ -378,10 +382,23 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
     }
     std::vector<CookedPiece> constrained =
         apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.warnings);
+    auto contract_start = Clock::now();
+    const ContractTerms terms{tau, decompose_settings.measure, limits};
+    for (std::string& violation : find_contract_violations(constrained, regions, terms)) {
+      if (level_taus.size() == 1) {
+        violations.push_back(std::move(violation));
+      } else {
+        std::ostringstream level_name;
+        level_name << "the level at τ " << tau << ": " << violation;
+        violations.push_back(level_name.str());
+      }
+    }
+    asset.stats.contract_ms += milliseconds_since(contract_start);
     for (const CookedPiece& piece : constrained) level.hulls.push_back(piece.hull);
     if (asset.levels.empty()) asset.pieces = std::move(constrained);
     asset.levels.push_back(std::move(level));
   }
+  enforce_contract(asset.source, violations);
   if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
   asset.stats.total_ms = milliseconds_since(start);
   return asset;
