@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace hullcook::cli {
@@ -57,7 +58,12 @@ int run_decompose(const DecomposeOptions& options) {
   std::vector<std::size_t> first_piece;  // per region, its first piece
   std::vector<double> level_tau;         // per region, the τ its pieces were cut at
   for (const Region& region : regions) {
-    const DecompositionTree tree = decompose(region, settings);
+    DecompositionTree tree;
+    try {
+      tree = decompose(region, settings);
+    } catch (const std::logic_error& e) {
+      throw ContractError(options.input + ": internal error: " + e.what());
+    }
     level_tau.push_back(options.max_pieces ? tau_within(tree, options.max_pieces) : tau);
     std::vector<Piece> part = tree.pieces_at(level_tau.back());
     first_piece.push_back(pieces.size());

@@ -23,6 +23,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 namespace hullcook {
@@ -458,6 +459,11 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     for (std::size_t i = next++; i < files.size(); i = next++) {
       try {
         result.assets[i] = cook_one(files[i], settings);
+      } catch (const std::logic_error& e) {
+        // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
+        // violation, with the asset.
+        errors[i] = std::make_exception_ptr(
+            ContractError(files[i].path.string() + ": internal error: " + e.what()));
       } catch (...) {
         errors[i] = std::current_exception();
       }
