@@ -377,7 +377,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
       asset.stats.decompose_ms = milliseconds_since(decompose_start);
     }
     std::vector<CookedPiece> constrained =
-        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.warnings);
+        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.source);
     for (const CookedPiece& piece : constrained) level.hulls.push_back(piece.hull);
     if (asset.levels.empty()) asset.pieces = std::move(constrained);
     asset.levels.push_back(std::move(level));
