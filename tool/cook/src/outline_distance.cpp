@@ -143,40 +143,47 @@ bool segment_meets_square(Vec2 a, Vec2 b, Vec2 centre, double half) {
 }  // namespace
 
 OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
-  // A cut is an edge of two components in opposite directions: sort the edges by their
-  // undirected key and keep, of each, the surplus of one direction over the other.
-  struct Directed {
-    Vec2 low, high;
-    bool forward;
-  };
-  std::vector<Directed> directed;
-  auto add_ring = [&](const Ring& ring) {
+  auto add_ring = [&](const Ring& ring, auto add) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      Vec2 a = ring[i], b = ring[(i + 1) % n];
-      if (a == b) continue;
-      bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
-      directed.push_back({forward ? a : b, forward ? b : a, forward});
+      if (ring[i] != ring[(i + 1) % n]) add(ring[i], ring[(i + 1) % n]);
     }
   };
-  for (const Region* component : components) {
-    add_ring(component->outer);
-    for (const Ring& hole : component->holes) add_ring(hole);
-  }
-  auto key = [](const Directed& e) { return std::tie(e.low.x, e.low.y, e.high.x, e.high.y); };
-  std::sort(directed.begin(), directed.end(), [&](const Directed& a, const Directed& b) {
-    return key(a) != key(b) ? key(a) < key(b) : a.forward < b.forward;
-  });
-  for (std::size_t i = 0; i < directed.size();) {
-    std::size_t j = i;
-    int surplus = 0;
-    for (; j < directed.size() && key(directed[j]) == key(directed[i]); ++j) {
-      surplus += directed[j].forward ? 1 : -1;
+  auto add_region = [&](const Region& region, auto add) {
+    add_ring(region.outer, add);
+    for (const Ring& hole : region.holes) add_ring(hole, add);
+  };
+  if (components.size() == 1) {
+    add_region(*components[0], [&](Vec2 a, Vec2 b) { edges_.push_back({a, b}); });
+  } else {
+    // A cut is an edge of two components in opposite directions: sort the edges by their
+    // undirected key and keep, of each, the surplus of one direction over the other.
+    struct Directed {
+      Vec2 low, high;
+      bool forward;
+    };
+    std::vector<Directed> directed;
+    for (const Region* component : components) {
+      add_region(*component, [&](Vec2 a, Vec2 b) {
+        bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+        directed.push_back({forward ? a : b, forward ? b : a, forward});
+      });
     }
-    for (int k = 0; k < std::abs(surplus); ++k) {
-      const Directed& e = directed[i];
-      edges_.push_back(surplus > 0 ? Edge{e.low, e.high} : Edge{e.high, e.low});
+    auto key = [](const Directed& e) { return std::tie(e.low.x, e.low.y, e.high.x, e.high.y); };
+    std::sort(directed.begin(), directed.end(), [&](const Directed& a, const Directed& b) {
+      return key(a) != key(b) ? key(a) < key(b) : a.forward < b.forward;
+    });
+    for (std::size_t i = 0; i < directed.size();) {
+      std::size_t j = i;
+      int surplus = 0;
+      for (; j < directed.size() && key(directed[j]) == key(directed[i]); ++j) {
+        surplus += directed[j].forward ? 1 : -1;
+      }
+      for (int k = 0; k < std::abs(surplus); ++k) {
+        const Directed& e = directed[i];
+        edges_.push_back(surplus > 0 ? Edge{e.low, e.high} : Edge{e.high, e.low});
+      }
+      i = j;
     }
-    i = j;
   }
   if (edges_.empty()) return;
 
@@ -195,28 +202,31 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
   columns_ = std::min(kMaxCellsPerSide, static_cast<int>(size.x / cell_) + 1);
   rows_ = std::min(kMaxCellsPerSide, static_cast<int>(size.y / cell_) + 1);
 
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> in_cell, in_row;
-  for (std::uint32_t k = 0; k < edges_.size(); ++k) {
-    const Edge& e = edges_[k];
-    for_each_cell_near(e.a, e.b, 0.0, [&](int column, int row) {
-      in_cell.emplace_back(static_cast<std::uint32_t>(row * columns_ + column), k);
-    });
-    for (int row = row_of(std::min(e.a.y, e.b.y)); row <= row_of(std::max(e.a.y, e.b.y)); ++row) {
-      in_row.emplace_back(static_cast<std::uint32_t>(row), k);
+  // Counted first, then filled: the edges of each cell and row in edge order.
+  cell_start_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
+  row_start_.assign(static_cast<std::size_t>(rows_) + 1, 0);
+  auto for_each_place = [&](auto in_cell, auto in_row) {
+    for (std::uint32_t k = 0; k < edges_.size(); ++k) {
+      const Edge& e = edges_[k];
+      for_each_cell_near(e.a, e.b, 0.0, [&](int column, int row) {
+        in_cell(static_cast<std::size_t>(row) * columns_ + column, k);
+      });
+      for (int row = row_of(std::min(e.a.y, e.b.y)), last = row_of(std::max(e.a.y, e.b.y));
+           row <= last; ++row) {
+        in_row(static_cast<std::size_t>(row), k);
+      }
     }
-  }
-  auto compress = [](std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::size_t bins,
-                     std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& items) {
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    start.assign(bins + 1, 0);
-    for (const auto& [bin, item] : pairs) ++start[bin + 1];
-    for (std::size_t b = 0; b < bins; ++b) start[b + 1] += start[b];
-    items.resize(pairs.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i) items[i] = pairs[i].second;
   };
-  compress(in_cell, static_cast<std::size_t>(columns_) * rows_, cell_start_, cell_edges_);
-  compress(in_row, static_cast<std::size_t>(rows_), row_start_, row_edges_);
+  for_each_place([&](std::size_t cell, std::uint32_t) { ++cell_start_[cell + 1]; },
+                 [&](std::size_t row, std::uint32_t) { ++row_start_[row + 1]; });
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
+  cell_edges_.resize(cell_start_.back());
+  row_edges_.resize(row_start_.back());
+  std::vector<std::uint32_t> cell_fill(cell_start_.begin(), cell_start_.end() - 1);
+  std::vector<std::uint32_t> row_fill(row_start_.begin(), row_start_.end() - 1);
+  for_each_place([&](std::size_t cell, std::uint32_t k) { cell_edges_[cell_fill[cell]++] = k; },
+                 [&](std::size_t row, std::uint32_t k) { row_edges_[row_fill[row]++] = k; });
   visited_.assign(edges_.size(), 0);
 }
 
@@ -330,23 +340,23 @@ double OutlineDistance::distance(Vec2 p, double limit) const {
 bool OutlineDistance::segment_within(Vec2 a, Vec2 b, double tau) const {
   if (edges_.empty()) return false;
   Vec2 v = b - a;
-  std::vector<Interval> covered;
+  std::vector<std::pair<double, double>>& covered = covered_;
+  covered.clear();
   for_each_edge_near(a, b, tau, [&](std::uint32_t k) {
     Interval interval = intersect(capsule_interval(a, v, edges_[k].a, edges_[k].b, tau), {0, 1});
-    if (!interval.empty()) covered.push_back(interval);
+    if (!interval.empty()) covered.emplace_back(interval.low, interval.high);
   });
-  std::sort(covered.begin(), covered.end(),
-            [](const Interval& x, const Interval& y) { return x.low < y.low; });
+  std::sort(covered.begin(), covered.end());
   // What no capsule covers is further than tau from the boundary: each gap lies wholly inside
   // or wholly outside the outline.
   double reach = 0;
   bool first = true;
   auto gap_inside = [&](double from, double to) { return contains(a + v * (0.5 * (from + to))); };
-  for (const Interval& interval : covered) {
-    if (first ? interval.low > 0 : interval.low > reach) {
-      if (!gap_inside(first ? 0.0 : reach, interval.low)) return false;
+  for (const auto& [low, high] : covered) {
+    if (first ? low > 0 : low > reach) {
+      if (!gap_inside(first ? 0.0 : reach, low)) return false;
     }
-    reach = first ? interval.high : std::max(reach, interval.high);
+    reach = first ? high : std::max(reach, high);
     first = false;
   }
   if (first) return gap_inside(0, 1);

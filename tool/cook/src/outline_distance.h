@@ -6,6 +6,7 @@
 #include "hullcook/core/polygon.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace hullcook {
@@ -67,7 +68,8 @@ class OutlineDistance {
   // cell c are cell_edges_[cell_start_[c] .. cell_start_[c + 1]).
   std::vector<std::uint32_t> cell_start_, cell_edges_;
   std::vector<std::uint32_t> row_start_, row_edges_;
-  mutable std::vector<std::uint32_t> visited_;  // per edge: the query that last saw it
+  mutable std::vector<std::uint32_t> visited_;              // per edge: the query that last saw it
+  mutable std::vector<std::pair<double, double>> covered_;  // segment_within's intervals
   mutable std::uint32_t query_ = 0;
 };
 
