@@ -253,7 +253,7 @@ class Constrainer {
         continue;
       }
       std::optional<Ring> sealed = fitter.seal(std::move(candidate));
-      if (sealed && hull_meets_limits(*sealed, limits_)) {
+      if (sealed && hull_meets_limits(*sealed, limits_) && fitter.edges_within_depth(*sealed)) {
         slot.hull = std::move(*sealed);
         slot.placed = true;
         return true;

@@ -162,6 +162,55 @@ bool HullFitter::holds_component(const Ring& hull) const {
   return ok;
 }
 
+bool HullFitter::edges_within_depth(const Ring& hull) const {
+  // Inside the convex hull a point's depth is its least distance to an edge's line: along a
+  // component edge, the least of linear functions, concave, so its top may lie between the ends
+  // (where the hull grew over the edge's middle). The top is at an end or where two lines cross.
+  std::size_t m = hull.size();
+  std::vector<Vec2> normals(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    Vec2 edge = hull[(k + 1) % m] - hull[k];
+    normals[k] = Vec2{-edge.y, edge.x} / glm::length(edge);
+  }
+  std::vector<double> at_start(m), slope(m);
+  double rounding = 1e-12 * size_of(hull);  // an edge on the hull's boundary is at depth 0
+  std::size_t index = 0;
+  bool ok = true;
+  auto check_ring = [&](const Ring& ring) {
+    std::size_t n = ring.size(), first = index;
+    for (std::size_t i = 0; i < n && ok; ++i) {
+      Vec2 u = ring[i], w = ring[(i + 1) % n];
+      double limit =
+          std::max(allowed_[first + i], allowed_[first + (i + 1) % n]) * (1 + 1e-12) + rounding;
+      double du = distance_to_ring(u, hull), dw = distance_to_ring(w, hull);
+      // Depth is 1-Lipschitz: the edge cannot reach deeper than this.
+      if ((du + dw + glm::length(w - u)) / 2 <= limit) continue;
+      for (std::size_t k = 0; k < m; ++k) {
+        at_start[k] = glm::dot(normals[k], u - hull[k]);
+        slope[k] = glm::dot(normals[k], w - u);
+      }
+      auto depth = [&](double t) {
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < m; ++k) least = std::min(least, at_start[k] + slope[k] * t);
+        return least;
+      };
+      double deepest = std::max(depth(0), depth(1));
+      for (std::size_t k = 0; k < m; ++k) {
+        for (std::size_t l = k + 1; l < m; ++l) {
+          if (slope[k] == slope[l]) continue;
+          double t = (at_start[l] - at_start[k]) / (slope[k] - slope[l]);
+          if (t > 0 && t < 1) deepest = std::max(deepest, depth(t));
+        }
+      }
+      ok = deepest <= limit;
+    }
+    index += n;
+  };
+  check_ring(component_.outer);
+  for (const Ring& hole : component_.holes) check_ring(hole);
+  return ok;
+}
+
 std::optional<Ring> HullFitter::seal(Ring hull) const {
   std::size_t n = hull.size();
   double size = size_of(hull);
@@ -205,7 +254,9 @@ std::optional<Ring> HullFitter::fit(Ring hull) {
     hull = std::move(*mended);
     if (limits_.max_verts == 0 || hull.size() <= limits_.max_verts) {
       std::optional<Ring> sealed = seal(std::move(hull));
-      if (sealed && !hull_meets_limits(*sealed, limits_)) return std::nullopt;
+      if (!sealed || !hull_meets_limits(*sealed, limits_) || !edges_within_depth(*sealed)) {
+        return std::nullopt;
+      }
       return sealed;
     }
     std::optional<Ring> reduced = reduce_vertex_count(hull);

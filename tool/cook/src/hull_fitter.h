@@ -46,8 +46,8 @@ class HullFitter {
         limits_(limits) {}
 
   // Grows hull (convex, counter-clockwise, within bound: it is not checked again) until it meets
-  // the limits, keeping every point it adds within bound and every component vertex within its
-  // allowed depth; nullopt when no such growth is found.
+  // the limits, keeping every point it adds within bound and every point of the component within
+  // its allowed depth; nullopt when no such growth is found.
   std::optional<Ring> fit(Ring hull);
 
   // True when every point grown adds to known (convex, inside it) is within bound.
@@ -56,6 +56,10 @@ class HullFitter {
   // True when every component vertex lies in hull (or on its boundary, or outside it by
   // rounding) no deeper than allowed.
   bool holds_component(const Ring& hull) const;
+
+  // True when every point of every component edge lies no deeper in hull (convex, holding the
+  // component) than the deeper of its ends may.
+  bool edges_within_depth(const Ring& hull) const;
 
   // hull with the edges rounding left a component vertex outside of moved out by a few units in
   // the last place; nullopt if that is not enough.
