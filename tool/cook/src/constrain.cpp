@@ -88,6 +88,12 @@ class Constrainer {
       : tau_(tau), limits_(limits), split_(split) {}
 
   void add(CookedPiece piece, int depth) {
+    // Most hulls meet the limits as the decomposition gives them.
+    if (hull_meets_limits(piece.hull, limits_)) {
+      Ring hull = piece.hull;
+      slots_.push_back({std::move(piece), std::move(hull), true});
+      return;
+    }
     // A hull grows within τ of its own component: stricter than the outline, it keeps hulls on
     // their pieces rather than spread over their neighbours.
     std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);

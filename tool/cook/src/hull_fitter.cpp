@@ -163,7 +163,15 @@ bool HullFitter::holds_component(const Ring& hull) const {
 }
 
 bool HullFitter::edges_within_depth(const Ring& hull) const {
-  // Inside the convex hull a point's depth is its least distance to an edge's line: along a
+  // In the component's own convex hull an edge lies under one bridge, and its depth below that
+  // bridge's line is linear: no deeper than its ends.
+  const Ring& outer = component_.outer;
+  if (std::all_of(hull.begin(), hull.end(), [&](Vec2 v) {
+        return std::find(outer.begin(), outer.end(), v) != outer.end();
+      })) {
+    return true;
+  }
+  // Inside a convex hull a point's depth is its least distance to an edge's line: along a
   // component edge, the least of linear functions, concave, so its top may lie between the ends
   // (where the hull grew over the edge's middle). The top is at an end or where two lines cross.
   std::size_t m = hull.size();
@@ -172,19 +180,27 @@ bool HullFitter::edges_within_depth(const Ring& hull) const {
     Vec2 edge = hull[(k + 1) % m] - hull[k];
     normals[k] = Vec2{-edge.y, edge.x} / glm::length(edge);
   }
+  auto depth_of = [&](Vec2 p) {
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < m; ++k) least = std::min(least, glm::dot(normals[k], p - hull[k]));
+    return least;
+  };
   std::vector<double> at_start(m), slope(m);
   double rounding = 1e-12 * size_of(hull);  // an edge on the hull's boundary is at depth 0
   std::size_t index = 0;
   bool ok = true;
   auto check_ring = [&](const Ring& ring) {
     std::size_t n = ring.size(), first = index;
+    double du = n > 0 ? depth_of(ring[0]) : 0;
     for (std::size_t i = 0; i < n && ok; ++i) {
       Vec2 u = ring[i], w = ring[(i + 1) % n];
+      double dw = depth_of(w);
       double limit =
           std::max(allowed_[first + i], allowed_[first + (i + 1) % n]) * (1 + 1e-12) + rounding;
-      double du = distance_to_ring(u, hull), dw = distance_to_ring(w, hull);
       // Depth is 1-Lipschitz: the edge cannot reach deeper than this.
-      if ((du + dw + glm::length(w - u)) / 2 <= limit) continue;
+      bool shallow = (du + dw + glm::length(w - u)) / 2 <= limit;
+      du = dw;
+      if (shallow) continue;
       for (std::size_t k = 0; k < m; ++k) {
         at_start[k] = glm::dot(normals[k], u - hull[k]);
         slope[k] = glm::dot(normals[k], w - u);
@@ -247,12 +263,18 @@ bool HullFitter::too_small(const Ring& hull) const {
 }
 
 std::optional<Ring> HullFitter::fit(Ring hull) {
+  const Ring given = hull;
   // Reducing the vertex count creates new apexes, which may need welding again.
   for (int round = 0; round < 4; ++round) {
     std::optional<Ring> mended = mend_local_violations(std::move(hull));
     if (!mended) return std::nullopt;
     hull = std::move(*mended);
     if (limits_.max_verts == 0 || hull.size() <= limits_.max_verts) {
+      // The hull given holds the component exactly (a convex hull of its vertices and more).
+      if (hull == given) {
+        if (!hull_meets_limits(hull, limits_) || !edges_within_depth(hull)) return std::nullopt;
+        return hull;
+      }
       std::optional<Ring> sealed = seal(std::move(hull));
       if (!sealed || !hull_meets_limits(*sealed, limits_) || !edges_within_depth(*sealed)) {
         return std::nullopt;
@@ -308,6 +330,8 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
 std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   std::size_t m = hull.size();
   apex_cache_.assign(m * m, ApexState::unknown);
+  corner_reach_.resize(m);
+  for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
   apex_points_.assign(m * m, Vec2{0, 0});
   std::vector<std::vector<std::size_t>> closed;
   for (std::size_t start = 0; start < m; ++start) {
@@ -368,8 +392,15 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
       double t = cross(c - a, second) / denominator;
       Vec2 apex = a + first * t;
       bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t);
-      if (ahead && reach_.distance(apex, bound_) <= bound_ &&
-          reach_.segment_within(b, apex, bound_) && reach_.segment_within(apex, c, bound_)) {
+      double at_apex = ahead ? reach_.distance(apex, bound_) : bound_ + 1;
+      // Distance is 1-Lipschitz: a segment whose ends' distances and half its length stay within
+      // bound needs no closer look.
+      auto within = [&](Vec2 corner, double at_corner) {
+        return (at_corner + at_apex + glm::length(apex - corner)) / 2 <= bound_ ||
+               reach_.segment_within(corner, apex, bound_);
+      };
+      if (at_apex <= bound_ && within(b, corner_reach_[(i + 1) % m]) &&
+          within(c, corner_reach_[j])) {
         state = ApexState::within;
         apex_points_[i * m + j] = apex;
       }

@@ -45,9 +45,10 @@ class HullFitter {
         bound_(bound),
         limits_(limits) {}
 
-  // Grows hull (convex, counter-clockwise, within bound: it is not checked again) until it meets
-  // the limits, keeping every point it adds within bound and every point of the component within
-  // its allowed depth; nullopt when no such growth is found.
+  // Grows hull (convex, counter-clockwise, holding the component's vertices exactly as a convex
+  // hull of them does, within bound: it is not checked again) until it meets the limits, keeping
+  // every point it adds within bound and every point of the component within its allowed depth;
+  // nullopt when no such growth is found.
   std::optional<Ring> fit(Ring hull);
 
   // True when every point grown adds to known (convex, inside it) is within bound.
@@ -81,6 +82,7 @@ class HullFitter {
   EngineLimits limits_;
   std::vector<ApexState> apex_cache_;
   std::vector<Vec2> apex_points_;
+  std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
 };
 
 }  // namespace hullcook
