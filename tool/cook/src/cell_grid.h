@@ -1,5 +1,5 @@
 // A uniform grid of square cells with items (edges or points) filed in the cells they meet: the
-// spatial index of the output contract's checks (contract.cpp, outline_distance.cpp).
+// spatial index of the output contract's partition check (contract.cpp).
 #pragma once
 
 #include "hullcook/core/polygon.h"

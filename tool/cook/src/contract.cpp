@@ -22,8 +22,6 @@
 namespace hullcook {
 namespace {
 
-using detail::OutlineDistance;
-
 std::string number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
@@ -263,65 +261,34 @@ void check_component_in_hull(const Region& component, const HullLines& lines, do
 
 // --- Every hull point within τ of the outline. ----------------------------------------------
 
-// Where on a hull edge the distance to the outline is known: an upper estimate of the signed
-// distance (outside positive) and an outline edge that near, if one is known.
-struct Probe {
-  Vec2 p;
-  double signed_distance;
-  std::size_t edge;
-};
-
+// A hull vertex by its distance to the outline; a hull edge by OutlineDistance::segment_within,
+// which proves it exactly (the points of a segment within τ of one outline edge are an interval
+// of it). An edge it refuses holds a point beyond the limit: the farthest of a fine sampling
+// names the violation.
 class HullReach {
  public:
-  HullReach(const OutlineDistance& outline, double limit, double slack)
-      : outline_(outline),
-        limit_(limit),
-        reach_(4 * limit + slack),
-        // Beyond this, subdividing stops: every point is then within limit + resolution / 2.
-        resolution_(std::max(1e-6 * limit, slack)) {}
+  HullReach(const OutlineDistance& outline, double limit) : outline_(outline), limit_(limit) {}
 
-  // The probe at p; beyond is set when p lies farther than the limit from the outline.
-  Probe probe(Vec2 p, Worst& beyond) const {
-    const OutlineDistance::Nearest nearest = outline_.nearest(p, reach_);
-    Probe probe{p, nearest.signed_distance, nearest.edge};
-    if (nearest.signed_distance > limit_) {
-      // Confirmed by a scan: only a sure violation is reported.
-      probe.signed_distance = outline_.distance_by_scan(p);
-      if (probe.signed_distance > limit_) beyond.offer(probe.signed_distance, p);
-    }
-    return probe;
+  void vertex(Vec2 p, Worst& beyond) const {
+    const double distance = outline_.distance(p, limit_);
+    if (distance > limit_) beyond.offer(distance, p);
   }
 
-  // Whether every point of the hull edge from a to b (probes of its ends) lies within the limit
-  // of the outline. The signed distance is 1-Lipschitz, so on a stretch of length L between ends
-  // s and e it is at most (s + e + L) / 2; and the distance to one outline edge is convex along a
-  // segment, so a stretch whose ends both lie within the limit of one edge lies within it. A
-  // stretch that neither rule settles is halved, down to the resolution.
-  bool edge_within(const Probe& a, const Probe& b, Worst& beyond) const {
-    std::vector<std::pair<Probe, Probe>> stretches{{a, b}};
-    while (!stretches.empty()) {
-      const auto [s, e] = stretches.back();
-      stretches.pop_back();
-      const double length = glm::length(e.p - s.p);
-      if (0.5 * (s.signed_distance + e.signed_distance + length) <= limit_) continue;
-      if (s.edge != OutlineDistance::kNoEdge && outline_.distance_to_edge(e.p, s.edge) <= limit_) {
-        continue;
-      }
-      if (e.edge != OutlineDistance::kNoEdge && outline_.distance_to_edge(s.p, e.edge) <= limit_) {
-        continue;
-      }
-      if (length <= resolution_) continue;
-      const Probe middle = probe(0.5 * (s.p + e.p), beyond);
-      if (middle.signed_distance > limit_) return false;
-      stretches.push_back({middle, e});
-      stretches.push_back({s, middle});
+  void edge(Vec2 a, Vec2 b, Worst& beyond) const {
+    if (outline_.segment_within(a, b, limit_)) return;
+    constexpr int kSamples = 256;
+    Worst farthest;
+    for (int k = 1; k < kSamples; ++k) {
+      const Vec2 p = a + (b - a) * (double(k) / kSamples);
+      farthest.offer(outline_.distance(p, std::numeric_limits<double>::infinity()), p);
     }
-    return true;
+    // Between two samples, when the sampling missed it: at least the limit.
+    beyond.offer(std::max(farthest.value, limit_), farthest.where);
   }
 
  private:
   const OutlineDistance& outline_;
-  double limit_, reach_, resolution_;
+  double limit_;
 };
 
 // Where each hull vertex stands in the component's outer ring (ring.size() where it does not):
@@ -529,8 +496,10 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   if (partition_problem) violations.push_back(*partition_problem);
   const bool partitioned = violations.empty();
 
-  const OutlineDistance outline_distance(outline);
-  const HullReach hull_reach(outline_distance, limit, slack);
+  std::vector<const Region*> regions;
+  for (const Region& region : outline) regions.push_back(&region);
+  const OutlineDistance outline_distance(regions);
+  const HullReach hull_reach(outline_distance, limit);
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const CookedPiece& piece = pieces[k];
     const std::string name = "piece " + std::to_string(k + 1) + ": ";
@@ -568,11 +537,8 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
     const Ring& hull = piece.hull;
     const std::vector<std::size_t> in_ring = hull_vertices_in_ring(hull, piece.component.outer);
     const std::size_t ring_size = piece.component.outer.size();
-    std::vector<Probe> probes;
     for (std::size_t i = 0; i < hull.size(); ++i) {
-      probes.push_back(in_ring[i] < ring_size && partitioned
-                           ? Probe{hull[i], 0.0, OutlineDistance::kNoEdge}
-                           : hull_reach.probe(hull[i], beyond));
+      if (!(in_ring[i] < ring_size && partitioned)) hull_reach.vertex(hull[i], beyond);
     }
     if (beyond.found()) {
       report("its hull's vertex " + point(beyond.where) + " lies " + number(beyond.value) +
@@ -584,7 +550,7 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
       const std::size_t from = in_ring[i], to = in_ring[(i + 1) % n];
       const bool on_component = partitioned && from < ring_size && to < ring_size &&
                                 (from + 1 == ring_size ? 0 : from + 1) == to;
-      if (!on_component) hull_reach.edge_within(probes[i], probes[(i + 1) % n], beyond);
+      if (!on_component) hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
     }
     if (beyond.found()) {
       report("its hull's point " + point(beyond.where) + " lies " + number(beyond.value) +

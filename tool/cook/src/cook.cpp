@@ -382,7 +382,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
       asset.stats.decompose_ms = milliseconds_since(decompose_start);
     }
     std::vector<CookedPiece> constrained =
-        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.warnings);
+        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.source);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms)) {
