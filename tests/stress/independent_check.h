@@ -19,8 +19,9 @@
 //  tau.component_to_hull    a point of a component's outer boundary farther than tau from its
 //                           hull's boundary
 //  tau.hole_to_hull         the same for a point of a hole the component keeps
-//  tau.hull_to_component    a point of a hull farther than tau from its component
-//  tau.hull_to_outline      (cooks) a point of a hull farther than tau from every region
+//  tau.hull_to_component    (decompositions) a point of a hull farther than tau from its component
+//  tau.hull_to_outline      (cooks) a point of a hull farther than tau from every region (a hull
+//                           the weld grew may reach over its neighbours, never past the outline)
 //  tau.unproven             the bound above could be neither proven nor refuted in the budget
 //  engine.max_verts         (cooks) a hull with more vertices than max_verts
 //  engine.weld              (cooks) two hull vertices closer than the weld

@@ -213,6 +213,16 @@ INSTANTIATE_TEST_SUITE_P(Stress, ImageFamilies, ::testing::ValuesIn(all_image_fa
                            return std::string(image_family_name(info.param));
                          });
 
+// scripts/stress 1500 --seed 9001: a strip of a one-pixel diagonal wall at 100 px per unit,
+// halved below the weld, got the smallest engine-ready triangle, which reaches 17 px along the
+// wall over its neighbours (within tau of the outline, as the cook's contract allows; the checker
+// had held cooked hulls to their own component).
+TEST(Issue16Regressions, AWeldGrownHullMayReachOverItsNeighbours) {
+  FailureLog log;
+  const DrawnImage image = draw_image(ImageFamily::one_pixel_walls, 9074);
+  log.add(run_image_case(image, CookCase{1.0, 100.0, Measure::h1}, kFailures));
+}
+
 class SampleSprites : public ::testing::TestWithParam<CookCase> {};
 
 TEST_P(SampleSprites, EveryCookedSpritePassesTheIndependentCheck) {
