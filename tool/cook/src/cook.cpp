@@ -19,6 +19,7 @@
 #include <cmath>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -114,14 +115,45 @@ std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces) {
   return cooked;
 }
 
+// Runs work(i) for every i below count on up to `threads` threads (the caller's included). Each
+// result goes to its own slot, so nothing depends on the thread count; the first error by index
+// is rethrown.
+void parallel_for(std::size_t count, unsigned threads,
+                  const std::function<void(std::size_t)>& work) {
+  if (threads <= 1 || count <= 1) {
+    for (std::size_t i = 0; i < count; ++i) work(i);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0};
+  auto run = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        work(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(threads, count); ++t) pool.emplace_back(run);
+  run();
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+}
+
 // The decomposition of every region of one asset, and the levels read off its
 // trees.
 class AssetDecomposer {
  public:
-  AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings)
+  AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings,
+                  unsigned threads)
       : settings_(settings) {
-    trees_.reserve(regions.size());
-    for (const Region& region : regions) trees_.push_back(decompose(region, settings));
+    trees_.resize(regions.size());
+    parallel_for(regions.size(), threads,
+                 [&](std::size_t r) { trees_[r] = decompose(regions[r], settings); });
   }
 
   std::vector<Piece> pieces_at(double tau) const {
@@ -301,7 +333,9 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
 }
 
-CookedAsset cook_one(const InputFile& file, const Settings& settings) {
+// threads: how many may work on this one asset (its regions and pieces), when there are fewer
+// assets than threads.
+CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned threads) {
   auto start = Clock::now();
   PreparedInput input =
       is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
@@ -348,7 +382,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   decompose_settings.sc = settings.sc;
   decompose_settings.sd = settings.sd;
   auto decompose_start = Clock::now();
-  AssetDecomposer decomposer(regions, decompose_settings);
+  AssetDecomposer decomposer(regions, decompose_settings, threads);
   if (settings.max_pieces > 0) {
     double budget_tau = decomposer.tau_for_budget(level_taus.front(), settings.max_pieces);
     if (budget_tau > level_taus.front()) {
@@ -377,8 +411,23 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
       }
       asset.stats.decompose_ms = milliseconds_since(decompose_start);
     }
-    std::vector<CookedPiece> constrained =
-        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.warnings);
+    // The pieces are independent: in chunks on the asset's threads, put back in order.
+    std::vector<CookedPiece> cooked = to_cooked(std::move(pieces));
+    const std::size_t chunks = threads > 1 ? std::min<std::size_t>(cooked.size(), 8 * threads) : 1;
+    std::vector<std::vector<CookedPiece>> chunk_out(chunks);
+    std::vector<std::vector<std::string>> chunk_warnings(chunks);
+    parallel_for(chunks, threads, [&](std::size_t c) {
+      const std::size_t first = cooked.size() * c / chunks, last = cooked.size() * (c + 1) / chunks;
+      std::vector<CookedPiece> part(std::make_move_iterator(cooked.begin() + first),
+                                    std::make_move_iterator(cooked.begin() + last));
+      chunk_out[c] = apply_engine_limits(std::move(part), tau, limits, split, chunk_warnings[c]);
+    });
+    std::vector<CookedPiece> constrained;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      std::move(chunk_out[c].begin(), chunk_out[c].end(), std::back_inserter(constrained));
+      asset.warnings.insert(asset.warnings.end(), chunk_warnings[c].begin(),
+                            chunk_warnings[c].end());
+    }
     for (const CookedPiece& piece : constrained) level.hulls.push_back(piece.hull);
     if (asset.levels.empty()) asset.pieces = std::move(constrained);
     asset.levels.push_back(std::move(level));
@@ -442,8 +491,10 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   // Assets are independent: cook them on a pool of threads, each into its own
   // slot, so the result never depends on the thread count. The first error (in
   // input order) wins.
-  unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
-  threads = std::clamp<unsigned>(threads, 1, std::max<std::size_t>(files.size(), 1));
+  const unsigned all_threads =
+      std::max(1u, settings.threads ? settings.threads : std::thread::hardware_concurrency());
+  const unsigned threads =
+      std::clamp<unsigned>(all_threads, 1, std::max<std::size_t>(files.size(), 1));
   std::vector<std::exception_ptr> errors(files.size());
   // The largest files first (their size stands for their work), so that a large asset does not
   // start last and leave the other threads idle.
@@ -457,12 +508,14 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
+  // One huge image or sheet alone: its threads split its regions and pieces instead.
+  const unsigned per_asset = files.size() == 1 ? all_threads : 1;
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t k = next++; k < files.size(); k = next++) {
       const std::size_t i = order[k];
       try {
-        result.assets[i] = cook_one(files[i], settings);
+        result.assets[i] = cook_one(files[i], settings, per_asset);
       } catch (...) {
         errors[i] = std::current_exception();
       }
