@@ -79,7 +79,11 @@ void expect_same_as_opencv(const std::string& name, const std::string& bytes) {
     keyed.color_key = key;
     EXPECT_TRUE(decode_alpha(bytes, name, keyed).alpha == opencv_alpha(reference, key)) << k;
   }
-  const auto dir = test::scratch_dir("decode_oracle_rgba");
+  // A directory per test: ctest runs the tests of this file in parallel processes.
+  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" /
+                   ("decode_oracle_" +
+                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  std::filesystem::create_directories(dir);
   const auto path = dir / std::filesystem::path(name).filename();
   test::write_bytes(path, bytes);
   const RgbaImage rgba = load_rgba(path, 1ull << 40);
