@@ -77,27 +77,75 @@ void append(png_structp png, png_bytep data, png_size_t size) {
   static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<char*>(data), size);
 }
 
-bool write_png_rows(png_structp png, png_infop info, std::string& out, const Rgba& image,
-                    std::vector<png_bytep>& rows) {
+// The PNG forms games ship, for the decode floor: RGBA and grey + alpha at 8 and 16 bits, and
+// palette + tRNS (the alpha quantised to 256 entries: palette entry i is grey i, alpha i).
+enum class PngForm { rgba8, rgba16, grey_alpha8, grey_alpha16, palette };
+
+bool write_png_rows(png_structp png, png_infop info, std::string& out, int width, int height,
+                    PngForm form, std::vector<png_bytep>& rows, std::vector<png_color>& palette,
+                    std::vector<png_byte>& alphas) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, &out, append, nullptr);
-  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  const bool sixteen = form == PngForm::rgba16 || form == PngForm::grey_alpha16;
+  const int type = form == PngForm::palette ? PNG_COLOR_TYPE_PALETTE
+                   : form == PngForm::grey_alpha8 || form == PngForm::grey_alpha16
+                       ? PNG_COLOR_TYPE_GRAY_ALPHA
+                       : PNG_COLOR_TYPE_RGB_ALPHA;
+  png_set_IHDR(png, info, width, height, sixteen ? 16 : 8, type, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (form == PngForm::palette) {
+    png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+    png_set_tRNS(png, info, alphas.data(), static_cast<int>(alphas.size()), nullptr);
+  }
   png_write_info(png, info);
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);
   return true;
 }
 
-void write_png(const fs::path& path, const Rgba& image) {
+void write_png(const fs::path& path, const Rgba& image, PngForm form = PngForm::rgba8) {
+  const bool sixteen = form == PngForm::rgba16 || form == PngForm::grey_alpha16;
+  const int channels = form == PngForm::palette                                        ? 1
+                       : form == PngForm::grey_alpha8 || form == PngForm::grey_alpha16 ? 2
+                                                                                       : 4;
+  const std::size_t row_bytes = std::size_t(image.width) * channels * (sixteen ? 2 : 1);
+  std::vector<png_byte> samples(row_bytes * image.height);
   std::vector<png_bytep> rows;
   for (int y = 0; y < image.height; ++y) {
-    rows.push_back(const_cast<png_bytep>(image.pixels.data()) + std::size_t(y) * image.width * 4);
+    png_byte* row = samples.data() + row_bytes * y;
+    rows.push_back(row);
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixels.data() + (std::size_t(y) * image.width + x) * 4;
+      const std::uint8_t grey = static_cast<std::uint8_t>((p[0] + p[1] + p[2]) / 3);
+      const std::uint8_t values[4] = {p[0], p[1], p[2], p[3]};
+      const std::uint8_t grey_alpha[2] = {grey, p[3]};
+      const std::uint8_t* v = channels == 2 ? grey_alpha : values;
+      if (form == PngForm::palette) {
+        row[x] = p[3];
+        continue;
+      }
+      for (int c = 0; c < channels; ++c) {
+        if (sixteen) {
+          row[(x * channels + c) * 2] = v[c];
+          row[(x * channels + c) * 2 + 1] = static_cast<png_byte>(v[c] ^ (x & 0x5a));
+        } else {
+          row[x * channels + c] = v[c];
+        }
+      }
+    }
+  }
+  std::vector<png_color> palette(256);
+  std::vector<png_byte> alphas(256);
+  for (int i = 0; i < 256; ++i) {
+    const auto v = static_cast<png_byte>(i);
+    palette[i] = {v, v, v};
+    alphas[i] = v;
   }
   std::string out;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
-  const bool ok = write_png_rows(png, info, out, image, rows);
+  const bool ok =
+      write_png_rows(png, info, out, image.width, image.height, form, rows, palette, alphas);
   png_destroy_write_struct(&png, &info);
   if (!ok) throw std::runtime_error("cannot write " + path.string());
   std::ofstream(path, std::ios::binary).write(out.data(), static_cast<std::streamsize>(out.size()));
@@ -168,6 +216,18 @@ std::vector<fs::path> write_synthetic_set(const fs::path& dir, bool quick) {
             draw(size, size, [&](double x, double y) { return swiss(x, y, size); }));
     add_png("blobs_" + std::to_string(size) + ".png",
             draw(size, size / 2, [&](double x, double y) { return blobs(x, y, 24, 9); }));
+  }
+  // One sprite in every PNG form, for the decode floor of each.
+  const int form_size = quick ? 256 : 768;
+  const Rgba form_image =
+      draw(form_size, form_size, [&](double x, double y) { return swiss(x, y, form_size); });
+  const std::pair<const char*, PngForm> forms[] = {{"form_rgba16.png", PngForm::rgba16},
+                                                   {"form_grey_alpha8.png", PngForm::grey_alpha8},
+                                                   {"form_grey_alpha16.png", PngForm::grey_alpha16},
+                                                   {"form_palette_trns.png", PngForm::palette}};
+  for (const auto& [name, form] : forms) {
+    files.push_back(dir / name);
+    write_png(files.back(), form_image, form);
   }
   const int sheet = quick ? 256 : 1024;
   const Rgba webp = draw(sheet, sheet, [&](double x, double y) { return blobs(x, y, 40, 15); });
@@ -304,22 +364,32 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
                const fs::path& scratch, int runs) {
   std::printf("\n== %s: %zu images\n", title.c_str(), files.size());
   double floor_ms = 0, decode_ms = 0, largest_image_mb = 0;
+  std::string forms;
   for (const fs::path& file : files) {
-    floor_ms += best_of(runs, [&] { return floor_decode_ms(file); });
+    const double floor_one = best_of(runs, [&] { return floor_decode_ms(file); });
     const TraceSettings trace;
     AlphaImage alpha;
-    decode_ms += best_of(runs, [&] {
+    const double decode_one = best_of(runs, [&] {
       const auto start = Clock::now();
       alpha = load_alpha(file, trace);
       return ms_since(start);
     });
+    floor_ms += floor_one, decode_ms += decode_one;
     largest_image_mb = std::max(largest_image_mb, alpha.width * double(alpha.height) * 4 / 1e6);
+    const std::string name = file.filename().string();
+    if (name.rfind("form_", 0) == 0 || file.extension() == ".webp") {
+      char line[200];
+      std::snprintf(line, sizeof line, "     %-26s floor %7.2f ms, hullcook %7.2f ms = %.2fx\n",
+                    name.c_str(), floor_one, decode_one, decode_one / floor_one);
+      forms += line;
+    }
   }
   std::printf("2. Decode floor (libpng/libwebp alone, best of %d): %8.2f ms\n", runs, floor_ms);
   std::printf(
       "   hullcook's decoding (alpha only):          %8.2f ms  = %.2fx the floor"
       "   (target <= 1.2x)\n",
       decode_ms, decode_ms / floor_ms);
+  std::printf("%s", forms.c_str());
 
   // Stages inside cook(), one thread: each asset's best run.
   std::vector<CookedStats> best;
@@ -346,12 +416,25 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
     write_output(result, out, cook_settings(1));
     return ms_since(start);
   });
-  const double after = trace + decompose + rest + write;
+  // The cleaner alone, on each asset's regions again (cleaning clean regions does the same
+  // checks); the engine limits are the rest.
+  double clean = 0;
+  for (const CookedAsset& asset : result.assets) {
+    clean += best_of(runs, [&] {
+      std::vector<Region> regions = asset.regions;
+      const auto start = Clock::now();
+      if (!regions.empty()) clean_and_validate(std::move(regions), asset.source);
+      return ms_since(start);
+    });
+  }
+  rest = std::max(0.0, rest - clean);
+  const double after = trace + decompose + clean + rest + write;
   std::printf("3. Stages after decoding, one thread (ms, and x the decode floor):\n");
   std::printf("   trace (march, nesting, simplify)  %8.2f  %5.2fx\n", trace, trace / floor_ms);
   std::printf("   decompose                         %8.2f  %5.2fx\n", decompose,
               decompose / floor_ms);
-  std::printf("   clean + engine limits + other     %8.2f  %5.2fx\n", rest, rest / floor_ms);
+  std::printf("   clean (validation)                %8.2f  %5.2fx\n", clean, clean / floor_ms);
+  std::printf("   engine limits + other             %8.2f  %5.2fx\n", rest, rest / floor_ms);
   std::printf("   write .hcb                        %8.2f  %5.2fx\n", write, write / floor_ms);
   std::printf("   all after decoding                %8.2f  %5.2fx   (target <= 1x)\n", after,
               after / floor_ms);
