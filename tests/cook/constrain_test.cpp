@@ -1,6 +1,9 @@
 #include "contract.h"
 
 #include "hullcook/cook/constrain.h"
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +26,10 @@ Ring regular_polygon(std::size_t n, double radius, Vec2 centre = {0, 0}) {
 
 CookedPiece convex_piece(const Ring& ring) { return CookedPiece{Region{ring, {}}, ring, 0.0}; }
 
+CookedPiece convex_piece_of(const Ring& ring) {
+  return CookedPiece{Region{ring, {}}, convex_hull(ring), 0.0};
+}
+
 // No further decomposition: the convex fallback (halving) is exercised alone.
 std::vector<CookedPiece> no_split(const Region& component, double) {
   return {CookedPiece{component, component.outer, 0.0}};
@@ -44,21 +51,18 @@ void expect_within(const std::vector<CookedPiece>& pieces, double tau, const Eng
 
 TEST(EngineLimits, RoundShapeGrowsToEightVerticesWithinTau) {
   // A circumscribed octagon around a radius-10 circle reaches 10 / cos(22.5°) - 10 ≈ 0.82 out.
-  std::vector<std::string> warnings;
   EngineLimits limits{8, 0.005};
   auto pieces =
-      apply_engine_limits({convex_piece(regular_polygon(40, 10))}, 1.0, limits, no_split, warnings);
+      apply_engine_limits({convex_piece(regular_polygon(40, 10))}, 1.0, limits, no_split, "test");
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_LE(pieces[0].hull.size(), 8u);
-  EXPECT_TRUE(warnings.empty());
   expect_within(pieces, 1.0, limits);
 }
 
 TEST(EngineLimits, TightToleranceSplitsConvexPiecesExactly) {
-  std::vector<std::string> warnings;
   EngineLimits limits{8, 0.005};
   Ring circle = regular_polygon(40, 10);
-  auto pieces = apply_engine_limits({convex_piece(circle)}, 0.001, limits, no_split, warnings);
+  auto pieces = apply_engine_limits({convex_piece(circle)}, 0.001, limits, no_split, "test");
   EXPECT_GT(pieces.size(), 1u);
   double area = 0;
   for (const CookedPiece& piece : pieces) area += ring_area(piece.component.outer);
@@ -67,20 +71,18 @@ TEST(EngineLimits, TightToleranceSplitsConvexPiecesExactly) {
 }
 
 TEST(EngineLimits, UnlimitedVerticesKeepsTheHull) {
-  std::vector<std::string> warnings;
   EngineLimits limits{0, 0.005};
   auto pieces =
-      apply_engine_limits({convex_piece(regular_polygon(40, 10))}, 0.0, limits, no_split, warnings);
+      apply_engine_limits({convex_piece(regular_polygon(40, 10))}, 0.0, limits, no_split, "test");
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces[0].hull.size(), 40u);
 }
 
 TEST(EngineLimits, CloseVerticesAreWeldedByGrowth) {
   Ring hull{{0, 0}, {4, 0}, {4.001, 0.0005}, {4, 4}, {0, 4}};
-  std::vector<std::string> warnings;
   EngineLimits limits{8, 0.005};
   auto pieces = apply_engine_limits({CookedPiece{Region{hull, {}}, hull, 0.0}}, 0.01, limits,
-                                    no_split, warnings);
+                                    no_split, "test");
   ASSERT_EQ(pieces.size(), 1u);
   expect_within(pieces, 0.01, limits);
   EXPECT_LT(pieces[0].hull.size(), hull.size());
@@ -88,23 +90,100 @@ TEST(EngineLimits, CloseVerticesAreWeldedByGrowth) {
 
 TEST(EngineLimits, NearlyCollinearVertexIsRemoved) {
   Ring hull{{0, 0}, {2, -1e-7}, {4, 0}, {4, 4}, {0, 4}};
-  std::vector<std::string> warnings;
   EngineLimits limits{8, 0.005};
   auto pieces = apply_engine_limits({CookedPiece{Region{hull, {}}, hull, 0.0}}, 0.01, limits,
-                                    no_split, warnings);
+                                    no_split, "test");
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces[0].hull.size(), 4u);
   expect_within(pieces, 0.01, limits);
 }
 
-TEST(EngineLimits, PieceSmallerThanWeldIsReportedNotDroppedSilently) {
+// The decomposition itself, as cook() passes it.
+std::vector<CookedPiece> decompose_at(const Region& component, double tau) {
+  std::vector<CookedPiece> pieces;
+  for (Piece& piece : decompose(component, {tau, Measure::h1, 0.1, 1.0}).pieces_at(tau)) {
+    pieces.push_back({piece.component, piece.hull, piece.concavity});
+  }
+  return pieces;
+}
+
+// The contract of issue 16 on pieces that partition outline.
+void expect_pieces_contract(const std::vector<CookedPiece>& pieces,
+                            const std::vector<Region>& outline, double tau,
+                            const EngineLimits& limits) {
+  CookedAsset asset;
+  asset.name = "pieces";
+  asset.regions = outline;
+  asset.pieces = pieces;
+  test::expect_cooked_contract(asset, tau, limits);
+}
+
+Ring scaled(Ring ring, double factor) {
+  for (Vec2& v : ring) v *= factor;
+  return ring;
+}
+
+// Issue 16: at --tau 4 a hull point ended 4.03 px outside the outline after --max-verts. The
+// fitter sampled each new edge at most 64 times, a quarter of τ apart at best: a long edge passing
+// over a notch's rim peaks between samples. A 40-vertex piece of teeworlds' game.png (τ 0.5 px),
+// 8 times larger: its 4-vertex hull came more than 4.07 px from the piece.
+TEST(Issue16, HullPointBeyondTauAfterMaxVertsIsNotKept) {
+  const Ring piece =
+      scaled({{65.50, 0.18},  {58.50, 1.80},  {55.50, 2.26},  {53.50, 2.84},  {41.50, 5.16},
+              {39.50, 5.75},  {36.50, 6.20},  {34.50, 6.79},  {31.50, 7.24},  {29.50, 7.83},
+              {26.50, 8.29},  {24.50, 8.86},  {17.50, 10.15}, {15.50, 10.73}, {12.50, 11.19},
+              {10.50, 11.78}, {7.50, 12.23},  {5.50, 12.81},  {2.50, 13.19},  {1.50, 13.61},
+              {0.50, 13.71},  {-0.01, 13.50}, {1.50, 13.21},  {1.81, 12.50},  {2.50, 12.11},
+              {3.50, 11.79},  {6.50, 10.20},  {7.50, 9.88},   {8.50, 9.26},   {20.50, 3.77},
+              {23.50, 2.18},  {24.50, 1.87},  {25.50, 1.24},  {37.50, -4.25}, {40.50, -5.84},
+              {41.50, -6.14}, {42.50, -6.78}, {43.50, -7.10}, {44.50, -7.72}, {65.41, -17.50}},
+             8);
+  ASSERT_GT(convex_hull(piece).size(), 8u);
+  EngineLimits limits{8, 0.005};
+  auto pieces = apply_engine_limits({convex_piece_of(piece)}, 4.0, limits, decompose_at, "game");
+  expect_pieces_contract(pieces, {Region{piece, {}}}, 4.0, limits);
+}
+
+// Issue 16: at 100 px per unit (weld 0.005 = 0.5 px) a sliver 0.03 px thin along a cut was left
+// out of the hulls, and the pieces' areas no longer added up to the outline's. It is merged into
+// the neighbour it shares the cut with.
+TEST(Issue16, SliverAtPpu100IsMergedIntoItsNeighbour) {
+  Ring square{{0, 0}, {0.2, 0}, {0.2, 0.2}, {0, 0.2}};
+  Ring sliver{{0.2, 0}, {0.2003, 0.1}, {0.2, 0.2}};
+  EngineLimits limits{8, 0.005};
+  const double tau = 0.01;  // 1 px
+  auto pieces = apply_engine_limits({convex_piece(square), convex_piece(sliver)}, tau, limits,
+                                    decompose_at, "sliver");
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_NEAR(test::region_area(pieces[0].component), ring_area(square) + ring_area(sliver), 1e-15);
+  expect_pieces_contract(pieces, {Region{square, {}}, Region{sliver, {}}}, tau, limits);
+}
+
+// Issue 16: a piece smaller than the weld with no neighbour is given the smallest hull the engine
+// accepts around it, within τ of the outline.
+TEST(Issue16, LoneTinyPieceIsGrownToAnEngineReadyHull) {
+  Ring tiny{{0, 0}, {0.003, 0}, {0.001, 0.002}};
+  EngineLimits limits{8, 0.005};
+  const double tau = 0.01;
+  auto pieces = apply_engine_limits({convex_piece(tiny)}, tau, limits, decompose_at, "tiny");
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_EQ(pieces[0].component.outer, tiny);
+  expect_pieces_contract(pieces, {Region{tiny, {}}}, tau, limits);
+  // Grown no more than the weld needs: a triangle or quad about the weld across.
+  EXPECT_LE(std::abs(ring_area(pieces[0].hull)), 2 * limits.weld * limits.weld);
+}
+
+// Issue 16: where no hull within τ can hold a piece thinner than the weld (τ a fiftieth of the
+// weld here), the cook refuses the asset by name instead of dropping the piece or breaking τ.
+TEST(Issue16, PieceTooSmallForTheWeldBelowTauIsAnInputErrorNamingTheAsset) {
   Ring tiny{{0, 0}, {0.002, 0}, {0, 0.002}};
-  std::vector<std::string> warnings;
-  auto pieces = apply_engine_limits({CookedPiece{Region{tiny, {}}, tiny, 0.0}}, 0.0001,
-                                    EngineLimits{8, 0.005}, no_split, warnings);
-  EXPECT_TRUE(pieces.empty());
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("too small"), std::string::npos);
+  try {
+    apply_engine_limits({convex_piece(tiny)}, 0.0001, EngineLimits{8, 0.005}, no_split, "tiny.png");
+    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("tiny.png"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("--weld"), std::string::npos) << error.what();
+  }
 }
 
 TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {

@@ -32,19 +32,23 @@ std::vector<std::filesystem::path> all_sprites() {
   return sprites;
 }
 
-class SpriteContract : public ::testing::TestWithParam<double> {};
+using test::Scale;
 
-// Issue 4: on every sprite, for τ in {0.5, 2, 8} px, every hull is engine-ready
-// and the components and hulls keep the error bound.
+class SpriteContract : public ::testing::TestWithParam<Scale> {};
+
+// Issues 4 and 16: on every sprite every hull is engine-ready, no piece is dropped, and the
+// components and hulls keep the error bound, at 1 px per unit and at Box2D's usual 100 (where
+// the weld, 0.005 m, is half a pixel).
 TEST_P(SpriteContract, EverySpriteKeepsTheContractAfterEngineLimits) {
   Settings settings;
-  settings.tau = Tolerance{GetParam(), false};
+  settings.tau = Tolerance{GetParam().tau_px, false};
+  settings.pixels_per_unit = GetParam().pixels_per_unit;
   CookResult result = cook({kSprites}, settings);
   ASSERT_EQ(result.assets.size(), all_sprites().size());
   EngineLimits limits{settings.max_verts, kDefaultWeld};
   for (const CookedAsset& asset : result.assets) {
     SCOPED_TRACE(asset.name);
-    EXPECT_DOUBLE_EQ(asset.tau, GetParam());
+    EXPECT_DOUBLE_EQ(asset.tau, GetParam().tau_px / GetParam().pixels_per_unit);
     for (const std::string& warning : asset.warnings) {
       EXPECT_EQ(warning.find("too small"), std::string::npos) << warning;
     }
@@ -52,7 +56,12 @@ TEST_P(SpriteContract, EverySpriteKeepsTheContractAfterEngineLimits) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Tau, SpriteContract, ::testing::Values(0.5, 2.0, 8.0));
+INSTANTIATE_TEST_SUITE_P(Tau, SpriteContract,
+                         ::testing::Values(Scale{0.5, 1}, Scale{2, 1}, Scale{8, 1}));
+// The scales issue 16 is checked at: its hull point 4.03 px out at τ 4, and its pieces lost at
+// 100 px per unit.
+INSTANTIATE_TEST_SUITE_P(Issue16, SpriteContract,
+                         ::testing::Values(Scale{1, 1}, Scale{4, 1}, Scale{1, 100}));
 
 // Issue 3, found while speeding the decomposer up. Each node of a tree must hold the concavity a
 // fresh measurement of its component gives, and a notch it is split at must be a deepest one, but:
@@ -127,6 +136,7 @@ TEST(Decompose, EveryTreeNodeOfEverySpriteHoldsAFreshMeasure) {
 std::vector<CookedAsset> without_timings(std::vector<CookedAsset> assets) {
   for (CookedAsset& asset : assets) {
     asset.stats.decompose_ms = asset.stats.decode_ms = asset.stats.trace_ms = 0;
+    asset.stats.contract_ms = 0;
     asset.stats.total_ms = 0;
   }
   return assets;

@@ -168,6 +168,9 @@ TEST(Issue16, NearCollinearVerticesOnDifferentHolesLeaveNoSliver) {
       {"issue16_hexagons_rounded_sliver.poly", 0.005},
       {"issue16_rounded_grid_slivers.poly", 0.005},
       {"issue16_octagons_rounded_spike.poly", 500.0},
+      // Hexagons in rows, vertices of different rows on one vertical line (2e-15 apart): a slab
+      // cut along a slab's bound passed that close to a vertex.
+      {"issue16_slab_cut_grazing_vertex.poly", 0.5},
   };
   for (const auto& [file, tau] : cases) {
     const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/core/data" / file;

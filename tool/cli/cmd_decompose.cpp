@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "cook_options.h"
 
+#include "hullcook/cook/contract.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/debug_json.h"
 #include "hullcook/cook/output_file.h"
@@ -13,7 +14,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace hullcook::cli {
@@ -29,6 +32,15 @@ struct DecomposeOptions {
   std::string json;
 };
 
+// The τ of the level that DecompositionTree::pieces_within(max_pieces) gives: the finest level
+// with at most max_pieces pieces, or infinity (the whole region) when none has so few.
+double tau_within(const DecompositionTree& tree, std::size_t max_pieces) {
+  for (double level : tree.level_taus()) {
+    if (tree.piece_count_at(level) <= std::max<std::size_t>(max_pieces, 1)) return level;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 int run_decompose(const DecomposeOptions& options) {
   const Tolerance tolerance = Tolerance::parse(options.tau);
   const std::optional<Measure> measure = parse_measure(options.measure);
@@ -43,12 +55,21 @@ int run_decompose(const DecomposeOptions& options) {
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Piece> pieces;
+  std::vector<std::size_t> first_piece;  // per region, its first piece
+  std::vector<double> level_tau;         // per region, the τ its pieces were cut at
   for (const Region& region : regions) {
-    const DecompositionTree tree = decompose(region, settings);
-    std::vector<Piece> part =
-        options.max_pieces ? tree.pieces_within(options.max_pieces) : tree.pieces_at(tau);
+    DecompositionTree tree;
+    try {
+      tree = decompose(region, settings);
+    } catch (const std::logic_error& e) {
+      throw ContractError(options.input + ": internal error: " + e.what());
+    }
+    level_tau.push_back(options.max_pieces ? tau_within(tree, options.max_pieces) : tau);
+    std::vector<Piece> part = tree.pieces_at(level_tau.back());
+    first_piece.push_back(pieces.size());
     for (Piece& piece : part) pieces.push_back(std::move(piece));
   }
+  first_piece.push_back(pieces.size());
   const double milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
@@ -68,6 +89,25 @@ int run_decompose(const DecomposeOptions& options) {
   asset.stats.convexity = convexity(pieces);
   asset.stats.decompose_ms = milliseconds;
   asset.stats.total_ms = milliseconds;
+
+  // Each region's pieces against that region, at the τ of their level.
+  const auto contract_start = std::chrono::steady_clock::now();
+  std::vector<std::string> violations;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const std::vector<CookedPiece> region_pieces(
+        asset.pieces.begin() + std::ptrdiff_t(first_piece[r]),
+        asset.pieces.begin() + std::ptrdiff_t(first_piece[r + 1]));
+    const ContractTerms terms{level_tau[r], *measure, EngineLimits{0, 0.0}};
+    for (const std::string& violation :
+         find_contract_violations(region_pieces, {regions[r]}, terms)) {
+      violations.push_back(
+          regions.size() == 1 ? violation : "region " + std::to_string(r + 1) + ": " + violation);
+    }
+  }
+  asset.stats.contract_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contract_start)
+          .count();
+  enforce_contract(options.input, violations);
 
   if (!options.json.empty()) write_file_atomically(options.json, debug_json({asset}));
   std::printf("%s: %zu pieces, max concavity %.6g, convexity %.6f, %.3f ms (tau %.6g, %s)\n",

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
       ": traces sprite silhouettes, splits them into approximately convex pieces (Lien-Amato ACD)\n"
       "and writes their convex hulls for 2D physics engines.\n\n"
       "Exit codes: 0 success, 1 usage error, 2 bad input, 3 output could not be written,\n"
-      "4 internal error.",
+      "4 internal error (such as an output that breaks its own contract; nothing is written).",
       "hullcook"};
   app.set_version_flag("--version", "hullcook " HULLCOOK_VERSION);
   app.require_subcommand(0, 1);

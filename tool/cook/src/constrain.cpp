@@ -1,276 +1,63 @@
 #include "hullcook/cook/constrain.h"
 
+#include "hull_fitter.h"
+#include "outline_distance.h"
+#include "piece_merge.h"
+#include "small_hull.h"
+
+#include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace hullcook {
 namespace {
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
-double distance_to_ring(Vec2 p, const Ring& ring) {
-  double best = std::numeric_limits<double>::infinity();
+// The smallest distance between two parallel lines enclosing the convex ring.
+double width_of(const Ring& hull) {
+  double width = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+    Vec2 edge = hull[(i + 1) % n] - hull[i];
+    double length = glm::length(edge);
+    if (length == 0) continue;
+    double farthest = 0;
+    for (Vec2 v : hull) farthest = std::max(farthest, cross(edge, v - hull[i]) / length);
+    width = std::min(width, farthest);
+  }
+  return width;
+}
+
+double perimeter(const Ring& ring) {
+  double length = 0;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    best = std::min(best, point_segment_distance(p, ring[i], ring[(i + 1) % n]));
+    length += glm::length(ring[(i + 1) % n] - ring[i]);
   }
-  return best;
+  return length;
 }
 
-// Distance from p to the filled component (zero inside it or on its boundary).
-double distance_to_component(Vec2 p, const Region& component) {
-  if (locate_point(component, p) != Location::outside) return 0.0;
-  double boundary = distance_to_ring(p, component.outer);
-  for (const Ring& hole : component.holes) boundary = std::min(boundary, distance_to_ring(p, hole));
-  return boundary;
-}
-
-// Height of vertex i above the line through its neighbours; negative for a reflex turn.
-double turn_height(const Ring& ring, std::size_t i) {
-  std::size_t n = ring.size();
-  Vec2 previous = ring[(i + n - 1) % n];
-  Vec2 next = ring[(i + 1) % n];
-  Vec2 base = next - previous;
-  double length = glm::length(base);
-  if (length == 0) return 0;
-  return cross(base, ring[i] - previous) * -1.0 / length;
-}
-
-struct Violations {
-  std::vector<std::size_t> edges;  // edges whose removal may help, without duplicates
-  bool any = false;
-};
-
-// Edges whose removal may mend a local violation: two vertices closer than the weld distance, or
-// a vertex (nearly) collinear with its neighbours.
-Violations find_violations(const Ring& hull, const EngineLimits& limits) {
-  Violations found;
-  std::size_t n = hull.size();
-  std::vector<bool> wanted(n, false);
-  auto want = [&](std::size_t edge) { wanted[edge % n] = true; };
-  double collinear = kCollinearFractionOfWeld * limits.weld;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (turn_height(hull, i) < collinear) {
-      want(i + n - 1);
-      want(i);
-    }
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (glm::length(hull[i] - hull[j]) < limits.weld) {
-        want(i + n - 1);
-        want(i);
-        want(j + n - 1);
-        want(j);
-      }
-    }
+struct Box {
+  Vec2 low{std::numeric_limits<double>::infinity()};
+  Vec2 high{-std::numeric_limits<double>::infinity()};
+  explicit Box(const Ring& ring) {
+    for (Vec2 p : ring) low = glm::min(low, p), high = glm::max(high, p);
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (wanted[i]) found.edges.push_back(i);
+  bool touches(const Box& other) const {
+    return low.x <= other.high.x && other.low.x <= high.x && low.y <= other.high.y &&
+           other.low.y <= high.y;
   }
-  found.any = !found.edges.empty();
-  return found;
-}
-
-// Removing edge i (hull[i] -> hull[i+1]) extends its neighbouring edges until they meet, so the
-// hull only grows. Returns the meeting point, if the neighbours converge.
-std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i) {
-  std::size_t n = hull.size();
-  if (n < 4) return std::nullopt;
-  Vec2 a = hull[i], b = hull[(i + 1) % n];
-  Vec2 before = a - hull[(i + n - 1) % n];
-  Vec2 after = hull[(i + 2) % n] - b;
-  double denominator = cross(before, after);
-  if (!(denominator > 0)) return std::nullopt;
-  double t = cross(b - a, after) / denominator;
-  if (!(t >= 0) || !std::isfinite(t)) return std::nullopt;
-  return a + before * t;
-}
-
-Ring without_edge(const Ring& hull, std::size_t i, Vec2 apex) {
-  std::size_t n = hull.size();
-  Ring grown;
-  grown.reserve(n - 1);
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k == i) {
-      grown.push_back(apex);
-    } else if (k != (i + 1) % n) {
-      grown.push_back(hull[k]);
-    }
-  }
-  return grown;
-}
-
-class HullFitter {
- public:
-  HullFitter(const Region& component, double tau, const EngineLimits& limits)
-      : component_(component), tau_(tau), limits_(limits) {}
-
-  // Grows hull until it meets the limits; nullopt when no growth keeps the bounds.
-  std::optional<Ring> fit(Ring hull) {
-    allowed_.clear();
-    for_each_component_vertex(
-        [&](Vec2 v) { allowed_.push_back(std::max(tau_, distance_to_ring(v, hull))); });
-    // Reducing the vertex count creates new apexes, which may need welding again.
-    for (int round = 0; round < 4; ++round) {
-      std::optional<Ring> mended = mend_local_violations(std::move(hull));
-      if (!mended) return std::nullopt;
-      hull = std::move(*mended);
-      if (limits_.max_verts == 0 || hull.size() <= limits_.max_verts) return hull;
-      std::optional<Ring> reduced = reduce_vertex_count(hull);
-      if (!reduced) return std::nullopt;
-      hull = std::move(*reduced);
-    }
-    return std::nullopt;
-  }
-
- private:
-  bool too_small(const Ring& hull) const {
-    return hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * limits_.weld * limits_.weld;
-  }
-
-  // Removes, one at a time, the cheapest edge that mends a weld or collinearity violation.
-  std::optional<Ring> mend_local_violations(Ring hull) const {
-    while (true) {
-      if (too_small(hull)) return std::nullopt;
-      Violations violations = find_violations(hull, limits_);
-      if (!violations.any) return hull;
-      struct Candidate {
-        double error;
-        std::size_t edge;
-        Vec2 apex;
-      };
-      std::vector<Candidate> candidates;
-      for (std::size_t edge : violations.edges) {
-        std::optional<Vec2> apex = removed_edge_apex(hull, edge);
-        if (!apex) continue;
-        double error = distance_to_component(*apex, component_);
-        if (error <= tau_) candidates.push_back({error, edge, *apex});
-      }
-      std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.error != b.error ? a.error < b.error : a.edge < b.edge;
-      });
-      bool grown = false;
-      for (const Candidate& candidate : candidates) {
-        std::size_t n = hull.size();
-        Ring next = without_edge(hull, candidate.edge, candidate.apex);
-        if (segment_within_tau(hull[candidate.edge], candidate.apex) &&
-            segment_within_tau(candidate.apex, hull[(candidate.edge + 1) % n]) &&
-            component_vertices_within(next)) {
-          hull = std::move(next);
-          grown = true;
-          break;
-        }
-      }
-      if (!grown) return std::nullopt;
-    }
-  }
-
-  // Keeps as few of the hull's edge lines as possible (at most max_verts) so that the polygon
-  // they bound stays within tau of the component. From every starting edge, each kept line is
-  // followed by the farthest line whose meeting point with it is still within tau: greedy
-  // farthest reach is optimal along a chain, and trying every start closes the cycle.
-  std::optional<Ring> reduce_vertex_count(const Ring& hull) {
-    std::size_t m = hull.size();
-    apex_cache_.assign(m * m, ApexState::unknown);
-    apex_points_.assign(m * m, Vec2{0, 0});
-    std::optional<Ring> best;
-    for (std::size_t start = 0; start < m; ++start) {
-      std::vector<std::size_t> kept{start};
-      std::size_t current = start;
-      bool closed = false;
-      while (kept.size() <= limits_.max_verts) {
-        std::size_t farthest = current + 1;
-        for (std::size_t j = current + 2; j <= start + m; ++j) {
-          if (!apex_within_tau(hull, current % m, j % m)) break;
-          farthest = j;
-        }
-        if (farthest == start + m) {
-          closed = true;
-          break;
-        }
-        kept.push_back(farthest);
-        current = farthest;
-      }
-      if (!closed || kept.size() > limits_.max_verts || kept.size() < 3) continue;
-      if (best && best->size() <= kept.size()) continue;
-      Ring polygon;
-      for (std::size_t k = 0; k < kept.size(); ++k) {
-        std::size_t i = kept[k] % m, j = kept[(k + 1) % kept.size()] % m;
-        polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
-      }
-      if (component_vertices_within(polygon)) best = std::move(polygon);
-    }
-    return best;
-  }
-
-  enum class ApexState : unsigned char { unknown, within, beyond };
-
-  // Whether the lines of edges i and j (j after i, counter-clockwise, not adjacent) meet at a
-  // point such that the region added between them stays within tau of the component.
-  bool apex_within_tau(const Ring& hull, std::size_t i, std::size_t j) {
-    std::size_t m = hull.size();
-    ApexState& state = apex_cache_[i * m + j];
-    if (state == ApexState::unknown) {
-      state = ApexState::beyond;
-      Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
-      Vec2 first = b - a, second = d - c;
-      double denominator = cross(first, second);
-      if (denominator > 0) {
-        double t = cross(c - a, second) / denominator;
-        Vec2 apex = a + first * t;
-        bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t);
-        if (ahead && distance_to_component(apex, component_) <= tau_ &&
-            segment_within_tau(b, apex) && segment_within_tau(apex, c)) {
-          state = ApexState::within;
-          apex_points_[i * m + j] = apex;
-        }
-      }
-    }
-    return state == ApexState::within;
-  }
-
-  template <typename Visit>
-  void for_each_component_vertex(Visit visit) const {
-    for (Vec2 v : component_.outer) visit(v);
-    for (const Ring& hole : component_.holes) {
-      for (Vec2 v : hole) visit(v);
-    }
-  }
-
-  // Every point of the segment stays within tau of the component (sampled at tau/4; the ends
-  // are checked by the caller or are old hull vertices).
-  bool segment_within_tau(Vec2 from, Vec2 to) const {
-    double step = tau_ > 0 ? tau_ / 4 : 1.0;
-    double length = glm::length(to - from);
-    int samples = std::clamp(static_cast<int>(std::ceil(length / step)), 1, 64);
-    for (int s = 1; s < samples; ++s) {
-      Vec2 p = from + (to - from) * (static_cast<double>(s) / samples);
-      if (distance_to_component(p, component_) > tau_) return false;
-    }
-    return true;
-  }
-
-  bool component_vertices_within(const Ring& hull) const {
-    std::size_t k = 0;
-    bool ok = true;
-    for_each_component_vertex([&](Vec2 v) {
-      if (ok && distance_to_ring(v, hull) > allowed_[k] * (1 + 1e-12)) ok = false;
-      ++k;
-    });
-    return ok;
-  }
-
-  const Region& component_;
-  double tau_;
-  EngineLimits limits_;
-  std::vector<double> allowed_;  // per component vertex: max(tau, distance before)
-  std::vector<ApexState> apex_cache_;
-  std::vector<Vec2> apex_points_;
 };
 
 bool is_convex_without_holes(const CookedPiece& piece) {
@@ -280,58 +67,237 @@ bool is_convex_without_holes(const CookedPiece& piece) {
   return hull_area - component_area <= 1e-12 * std::max(1.0, hull_area);
 }
 
-// Splits a convex polygon along the diagonal between vertex 0 and the middle vertex.
-std::pair<Ring, Ring> halve_convex(const Ring& polygon) {
+// Splits a convex component along the diagonal from vertex 0 to the middle vertex, when both
+// halves have an area.
+std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon) {
+  if (polygon.size() < 4) return std::nullopt;
   std::size_t middle = polygon.size() / 2;
   Ring first(polygon.begin(), polygon.begin() + static_cast<std::ptrdiff_t>(middle) + 1);
   Ring second(polygon.begin() + static_cast<std::ptrdiff_t>(middle), polygon.end());
   second.push_back(polygon.front());
-  return {first, second};
+  if (!(signed_area(first) > 0) || !(signed_area(second) > 0)) return std::nullopt;
+  return std::pair{std::move(first), std::move(second)};
 }
+
+// A vertex's position, as a key for the depths it was allowed before a merge.
+using VertexKey = std::pair<double, double>;
 
 class Constrainer {
  public:
-  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split,
-              std::vector<std::string>& warnings)
-      : tau_(tau), limits_(limits), split_(split), warnings_(warnings) {}
+  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split)
+      : tau_(tau), limits_(limits), split_(split) {}
 
-  void add(CookedPiece piece, int depth, std::vector<CookedPiece>& out) {
-    HullFitter fitter(piece.component, tau_, limits_);
+  void add(CookedPiece piece, int depth) {
+    // Most hulls meet the limits as the decomposition gives them.
+    if (hull_meets_limits(piece.hull, limits_)) {
+      Ring hull = piece.hull;
+      slots_.push_back({std::move(piece), std::move(hull), true});
+      return;
+    }
+    // A hull grows within τ of its own component: stricter than the outline, it keeps hulls on
+    // their pieces rather than spread over their neighbours.
+    std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);
+    OutlineDistance reach({&piece.component});
+    bool edges_suffice = pockets_within(piece.component, piece.hull, tau_);
+    HullFitter fitter(piece.component, allowed, reach, edges_suffice, tau_, limits_);
     if (std::optional<Ring> hull = fitter.fit(piece.hull)) {
-      piece.hull = std::move(*hull);
-      out.push_back(std::move(piece));
+      slots_.push_back({std::move(piece), std::move(*hull), true});
       return;
     }
-    // Finer decompositions leave more room for growth; at τ = 0 the pieces are convex.
-    static constexpr double kSplitFractions[] = {0.5, 0.125, 0.0};
-    for (; depth < 3; ++depth) {
-      std::vector<CookedPiece> parts = split_(piece.component, tau_ * kSplitFractions[depth]);
-      if (parts.size() > 1) {
-        for (CookedPiece& part : parts) add(std::move(part), depth + 1, out);
-        return;
+    // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
+    if (!is_small(piece)) {
+      // Finer decompositions leave more room for growth; at τ = 0 the pieces are convex.
+      static constexpr double kSplitFractions[] = {0.5, 0.125, 0.0};
+      for (; depth < 3; ++depth) {
+        std::vector<CookedPiece> parts = split_(piece.component, tau_ * kSplitFractions[depth]);
+        if (parts.size() > 1) {
+          for (CookedPiece& part : parts) add(std::move(part), depth + 1);
+          return;
+        }
+      }
+      if (is_convex_without_holes(piece)) {
+        if (auto halves = halve_convex(piece.component.outer)) {
+          for (Ring* half : {&halves->first, &halves->second}) {
+            Ring hull = convex_hull(*half);
+            add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0}, 3);
+          }
+          return;
+        }
       }
     }
-    if (is_convex_without_holes(piece) && piece.hull.size() > 3) {
-      auto [first, second] = halve_convex(piece.hull);
-      for (const Ring& half : {first, second}) {
-        CookedPiece part{Region{half, {}}, half, 0.0};
-        add(std::move(part), 3, out);
+    Ring hull = piece.hull;
+    slots_.push_back({std::move(piece), std::move(hull), false});
+  }
+
+  // Places the pieces no hull of their own could hold: each is merged into a neighbour, or
+  // given the smallest engine-ready hull that holds it. Throws InputError when neither keeps τ.
+  std::vector<CookedPiece> finish(std::string_view source) {
+    bool progress = true;
+    while (progress) {
+      progress = false;
+      for (std::size_t k = 0; k < slots_.size(); ++k) {
+        if (!slots_[k].placed && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
       }
-      return;
     }
-    std::ostringstream message;
-    message << "a piece of area " << std::abs(signed_area(piece.hull)) << " near ("
-            << piece.hull.front().x << ", " << piece.hull.front().y
-            << ") is too small for the engine (weld " << limits_.weld
-            << "); it is left out of the hulls";
-    warnings_.push_back(message.str());
+    for (std::size_t k = 0; k < slots_.size(); ++k) {
+      if (slots_[k].placed || slots_[k].merged) continue;
+      if (!grow(k)) throw_unplaceable(slots_[k], source);
+    }
+    std::vector<CookedPiece> pieces;
+    pieces.reserve(slots_.size());
+    for (Slot& slot : slots_) {
+      if (slot.merged) continue;
+      slot.piece.hull = std::move(slot.hull);
+      pieces.push_back(std::move(slot.piece));
+    }
+    return pieces;
   }
 
  private:
+  struct Slot {
+    CookedPiece piece;  // its hull: the decomposition's
+    Ring hull;          // the engine-ready hull once placed
+    bool placed = false;
+    bool merged = false;  // merged into another slot
+  };
+
+  // Merges slot k into the neighbour it shares the longest cut with, among those whose merged
+  // component needs no split at τ and whose hull then fits within the limits.
+  bool merge_into_neighbour(std::size_t k) {
+    const CookedPiece& small = slots_[k].piece;
+    Box box(small.component.outer);
+    struct Option {
+      double shared;
+      std::size_t slot;
+      Region merged;
+    };
+    std::vector<Option> options;
+    for (std::size_t j = 0; j < slots_.size(); ++j) {
+      const Slot& other = slots_[j];
+      if (j == k || !other.placed || !box.touches(Box(other.piece.component.outer))) continue;
+      if (std::optional<Region> merged = merge_components(small.component, other.piece.component)) {
+        double shared = perimeter(small.component.outer) + perimeter(other.piece.component.outer) -
+                        perimeter(merged->outer);
+        options.push_back({shared, j, std::move(*merged)});
+      }
+    }
+    std::stable_sort(options.begin(), options.end(),
+                     [](const Option& a, const Option& b) { return a.shared > b.shared; });
+    for (Option& option : options) {
+      Slot& neighbour = slots_[option.slot];
+      const Region& merged = option.merged;
+      Ring merged_hull = convex_hull(merged.outer);
+      if (!pockets_within(merged, merged_hull, tau_)) continue;
+      // The neighbour's engine-ready hull was proven; only what the small piece adds is new.
+      Ring start = neighbour.hull;
+      start.insert(start.end(), merged.outer.begin(), merged.outer.end());
+      start = convex_hull(start);
+      std::vector<double> allowed = merged_depths(merged, slots_[k], neighbour);
+      OutlineDistance reach({&merged});
+      HullFitter fitter(merged, allowed, reach, true, tau_, limits_);
+      if (!fitter.holds_component(start) || !fitter.growth_within(start, merged_hull)) continue;
+      std::optional<Ring> hull = fitter.fit(start);
+      if (!hull) continue;
+      // The merged component must be one piece at τ under the asset's measure.
+      std::vector<CookedPiece> measured = split_(merged, tau_);
+      if (measured.size() != 1) continue;
+      neighbour.piece =
+          CookedPiece{std::move(option.merged), std::move(merged_hull), measured[0].concavity};
+      neighbour.hull = std::move(*hull);
+      slots_[k].merged = true;
+      return true;
+    }
+    return false;
+  }
+
+  // For each vertex of merged, the depth it was allowed in the slot it came from.
+  std::vector<double> merged_depths(const Region& merged, const Slot& a, const Slot& b) const {
+    std::map<VertexKey, double> before;
+    for (const Slot* slot : {&a, &b}) {
+      const Ring& hull = slot->placed ? slot->hull : slot->piece.hull;
+      std::vector<double> depths = allowed_depths(slot->piece.component, hull, tau_);
+      std::size_t i = 0;
+      auto note = [&](const Ring& ring) {
+        for (Vec2 v : ring) {
+          double& depth = before.try_emplace({v.x, v.y}, 0.0).first->second;
+          depth = std::max(depth, depths[i++]);
+        }
+      };
+      note(slot->piece.component.outer);
+      for (const Ring& hole : slot->piece.component.holes) note(hole);
+    }
+    std::vector<double> allowed;
+    auto take = [&](const Ring& ring) {
+      for (Vec2 v : ring) {
+        auto found = before.find({v.x, v.y});
+        allowed.push_back(found == before.end() ? tau_ : found->second);
+      }
+    };
+    take(merged.outer);
+    for (const Ring& hole : merged.holes) take(hole);
+    return allowed;
+  }
+
+  // Gives slot k the smallest engine-ready hull that holds its component. It may reach over the
+  // neighbours: only the outline bounds it, and cells prove its area.
+  bool grow(std::size_t k) {
+    if (!outline_) {
+      std::vector<const Region*> components;
+      for (const Slot& slot : slots_) {
+        if (!slot.merged) components.push_back(&slot.piece.component);
+      }
+      outline_.emplace(components);
+    }
+    Slot& slot = slots_[k];
+    const Ring& known = slot.piece.hull;
+    bool known_inside = known.size() >= 3 && signed_area(known) > 0;
+    std::vector<double> allowed = allowed_depths(slot.piece.component, known, tau_);
+    HullFitter fitter(slot.piece.component, allowed, *outline_, false, tau_, limits_);
+    for (Ring& candidate : small_hulls(slot.piece.component.outer, limits_)) {
+      if (!hull_meets_limits(candidate, limits_) || !fitter.holds_component(candidate) ||
+          !fitter.growth_within(candidate, known_inside ? known : Ring{})) {
+        continue;
+      }
+      std::optional<Ring> sealed = fitter.seal(std::move(candidate));
+      if (sealed && hull_meets_limits(*sealed, limits_) && fitter.edges_within_depth(*sealed)) {
+        slot.hull = std::move(*sealed);
+        slot.placed = true;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  bool is_small(const CookedPiece& piece) const {
+    return piece.hull.size() < 3 || width_of(piece.hull) < limits_.weld;
+  }
+
+  // A piece thinner than the weld that no hull within τ holds: the weld is too coarse for τ. Any
+  // other piece is split down to convex parts and halves of them, which always fit; one that
+  // could not be split (holes the decomposition kept) is an internal error.
+  [[noreturn]] void throw_unplaceable(const Slot& slot, std::string_view source) const {
+    Box box(slot.piece.component.outer);
+    std::ostringstream message;
+    message << source << ": a piece of " << region_area(slot.piece.component)
+            << " square units near (" << 0.5 * (box.low.x + box.high.x) << ", "
+            << 0.5 * (box.low.y + box.high.y) << ")";
+    if (!is_small(slot.piece)) {
+      message << " with " << slot.piece.component.holes.size()
+              << " holes could not be split into pieces that fit the engine limits";
+      throw std::logic_error(message.str());
+    }
+    message << " is thinner than the weld distance " << limits_.weld
+            << " and can be neither merged into a neighbour nor given an engine-ready hull "
+               "within tau = "
+            << tau_ << "; lower --weld, or raise --tau or lower --ppu";
+    throw InputError(message.str());
+  }
+
   double tau_;
   EngineLimits limits_;
   const SplitComponent& split_;
-  std::vector<std::string>& warnings_;
+  std::vector<Slot> slots_;
+  std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
 };
 
 }  // namespace
@@ -342,18 +308,15 @@ bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
   for (std::size_t i = 0; i < hull.size(); ++i) {
     if (turn_height(hull, i) <= 0) return false;
   }
-  return !find_violations(hull, limits).any;
+  return edges_to_mend(hull, limits).empty();
 }
 
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
-                                             const SplitComponent& split,
-                                             std::vector<std::string>& warnings) {
-  std::vector<CookedPiece> out;
-  out.reserve(pieces.size());
-  Constrainer constrainer(tau, limits, split, warnings);
-  for (CookedPiece& piece : pieces) constrainer.add(std::move(piece), 0, out);
-  return out;
+                                             const SplitComponent& split, std::string_view source) {
+  Constrainer constrainer(tau, limits, split);
+  for (CookedPiece& piece : pieces) constrainer.add(std::move(piece), 0);
+  return constrainer.finish(source);
 }
 
 }  // namespace hullcook

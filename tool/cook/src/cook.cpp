@@ -3,6 +3,7 @@
 #include "hullcook/cook/cook.h"
 
 #include "hullcook/cook/constrain.h"
+#include "hullcook/cook/contract.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
@@ -24,6 +25,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 namespace hullcook {
@@ -333,7 +335,7 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
 }
 
-// threads: how many may work on this one asset (its regions and pieces), when there are fewer
+// threads: how many may work on this one asset (its regions), when there are fewer
 // assets than threads.
 CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned threads) {
   auto start = Clock::now();
@@ -400,6 +402,9 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
     finer.tau = tau;
     return to_cooked(decompose(component, finer).pieces_at(tau));
   };
+  // Every level is checked before the asset is returned, so that a broken one stops the cook
+  // before anything is written.
+  std::vector<std::string> violations;
   for (double tau : level_taus) {
     std::vector<Piece> pieces = decomposer.pieces_at(tau);
     CookedLevel level{tau, {}};
@@ -411,27 +416,25 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
       }
       asset.stats.decompose_ms = milliseconds_since(decompose_start);
     }
-    // The pieces are independent: in chunks on the asset's threads, put back in order.
-    std::vector<CookedPiece> cooked = to_cooked(std::move(pieces));
-    const std::size_t chunks = threads > 1 ? std::min<std::size_t>(cooked.size(), 8 * threads) : 1;
-    std::vector<std::vector<CookedPiece>> chunk_out(chunks);
-    std::vector<std::vector<std::string>> chunk_warnings(chunks);
-    parallel_for(chunks, threads, [&](std::size_t c) {
-      const std::size_t first = cooked.size() * c / chunks, last = cooked.size() * (c + 1) / chunks;
-      std::vector<CookedPiece> part(std::make_move_iterator(cooked.begin() + first),
-                                    std::make_move_iterator(cooked.begin() + last));
-      chunk_out[c] = apply_engine_limits(std::move(part), tau, limits, split, chunk_warnings[c]);
-    });
-    std::vector<CookedPiece> constrained;
-    for (std::size_t c = 0; c < chunks; ++c) {
-      std::move(chunk_out[c].begin(), chunk_out[c].end(), std::back_inserter(constrained));
-      asset.warnings.insert(asset.warnings.end(), chunk_warnings[c].begin(),
-                            chunk_warnings[c].end());
+    std::vector<CookedPiece> constrained =
+        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.source);
+    auto contract_start = Clock::now();
+    const ContractTerms terms{tau, decompose_settings.measure, limits};
+    for (std::string& violation : find_contract_violations(constrained, regions, terms)) {
+      if (level_taus.size() == 1) {
+        violations.push_back(std::move(violation));
+      } else {
+        std::ostringstream level_name;
+        level_name << "the level at τ " << tau << ": " << violation;
+        violations.push_back(level_name.str());
+      }
     }
+    asset.stats.contract_ms += milliseconds_since(contract_start);
     for (const CookedPiece& piece : constrained) level.hulls.push_back(piece.hull);
     if (asset.levels.empty()) asset.pieces = std::move(constrained);
     asset.levels.push_back(std::move(level));
   }
+  enforce_contract(asset.source, violations);
   if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
   asset.stats.total_ms = milliseconds_since(start);
   return asset;
@@ -508,7 +511,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
-  // One huge image or sheet alone: its threads split its regions and pieces instead.
+  // One huge image or sheet alone: its threads split its regions instead.
   const unsigned per_asset = files.size() == 1 ? all_threads : 1;
   std::atomic<std::size_t> next{0};
   auto work = [&] {
@@ -516,6 +519,11 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
       const std::size_t i = order[k];
       try {
         result.assets[i] = cook_one(files[i], settings, per_asset);
+      } catch (const std::logic_error& e) {
+        // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
+        // violation, with the asset.
+        errors[i] = std::make_exception_ptr(
+            ContractError(files[i].path.string() + ": internal error: " + e.what()));
       } catch (...) {
         errors[i] = std::current_exception();
       }

@@ -240,6 +240,8 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
     json.number(asset.stats.decode_ms);
     out += ", \"trace_ms\": ";
     json.number(asset.stats.trace_ms);
+    out += ", \"contract_ms\": ";
+    json.number(asset.stats.contract_ms);
     out += "}}";
   }
   out += "\n ]}\n";

@@ -165,13 +165,30 @@ class EdgeGrid {
 // the first edge it meets. Each pair that shares a cell is tested once.
 std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
                                       const std::vector<std::size_t>& ring_sizes) {
+  auto boxes_apart = [](const Edge& e, const Edge& f) {
+    return std::max(f.a.x, f.b.x) < std::min(e.a.x, e.b.x) ||
+           std::min(f.a.x, f.b.x) > std::max(e.a.x, e.b.x) ||
+           std::max(f.a.y, f.b.y) < std::min(e.a.y, e.b.y) ||
+           std::min(f.a.y, f.b.y) > std::max(e.a.y, e.b.y);
+  };
+  // A few edges (a piece that the output contract checks is often a handful): every pair costs
+  // less than building the grid.
+  if (edges.size() <= 32) {
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      for (std::size_t j = i + 1; j < edges.size(); ++j) {
+        const Edge& e = edges[i];
+        const Edge& f = edges[j];
+        if (boxes_apart(e, f) || adjacent(e, f, ring_sizes)) continue;
+        if (segments_intersect(e.a, e.b, f.a, f.b)) return Crossing{&e, &f};
+      }
+    }
+    return std::nullopt;
+  }
   const EdgeGrid grid(edges);
   // tested_with[j] == i: the pair (i, j) was tested in an earlier cell of edge i.
   std::vector<std::size_t> tested_with(edges.size(), edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const Edge& e = edges[i];
-    const double e_min_x = std::min(e.a.x, e.b.x), e_max_x = std::max(e.a.x, e.b.x);
-    const double e_min_y = std::min(e.a.y, e.b.y), e_max_y = std::max(e.a.y, e.b.y);
     std::size_t second = edges.size();
     grid.for_each_cell(e, [&](std::size_t cell) {
       // Entries are in increasing order: the pairs with an earlier edge were tested from it.
@@ -181,11 +198,7 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
         if (tested_with[j] == i) continue;
         tested_with[j] = i;
         const Edge& f = edges[j];
-        if (std::max(f.a.x, f.b.x) < e_min_x || std::min(f.a.x, f.b.x) > e_max_x ||
-            std::max(f.a.y, f.b.y) < e_min_y || std::min(f.a.y, f.b.y) > e_max_y) {
-          continue;
-        }
-        if (adjacent(e, f, ring_sizes)) continue;
+        if (boxes_apart(e, f) || adjacent(e, f, ring_sizes)) continue;
         if (segments_intersect(e.a, e.b, f.a, f.b)) second = j;
       }
     });
@@ -213,22 +226,6 @@ Box box_of(const Ring& ring) {
 }
 
 constexpr double kLargestCoordinate = 1e150;
-
-// The orientation of a simple ring, exactly: +1 counter-clockwise, -1 clockwise, 0 for none (no
-// turn at its lowest vertex). That vertex, lowest then leftmost, is a vertex of the convex hull,
-// so the ring turns there the way it runs. The sign of the floating-point area is not enough: a
-// sliver's area rounds to zero or to the wrong sign (issue 3's fuzzing: a clockwise triangle was
-// taken for a counter-clockwise one, and a valid sliver piece was refused for zero area).
-int exact_orientation(const Ring& ring) {
-  std::size_t lowest = 0;
-  for (std::size_t i = 1; i < ring.size(); ++i) {
-    if (ring[i].y < ring[lowest].y || (ring[i].y == ring[lowest].y && ring[i].x < ring[lowest].x)) {
-      lowest = i;
-    }
-  }
-  const std::size_t n = ring.size();
-  return orientation(ring[(lowest + n - 1) % n], ring[lowest], ring[(lowest + 1) % n]);
-}
 
 }  // namespace
 
@@ -302,7 +299,7 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
       }
     }
     auto orient_exactly = [&](Ring& ring, int ring_index) {
-      const int turn = exact_orientation(ring);
+      const int turn = ring_orientation(ring);
       if (turn == 0) fail(ring_name(ring_index) + ": zero area");
       if ((turn > 0) != (ring_index == 0)) std::reverse(ring.begin(), ring.end());
     };

@@ -276,6 +276,22 @@ Ring convex_hull(const Ring& points) {
   return hull;
 }
 
+int ring_orientation(const Ring& ring) {
+  // The lowest (then leftmost) vertex is a vertex of the convex hull, so the ring turns there the
+  // way it runs. The sign of the floating-point area is not enough: a sliver's area rounds to zero
+  // or to the wrong sign (issue 3's fuzzing: a clockwise triangle was taken for a
+  // counter-clockwise one, and a valid sliver piece was refused for zero area).
+  if (ring.size() < 3) return 0;
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < ring.size(); ++i) {
+    if (ring[i].y < ring[lowest].y || (ring[i].y == ring[lowest].y && ring[i].x < ring[lowest].x)) {
+      lowest = i;
+    }
+  }
+  const std::size_t n = ring.size();
+  return orientation(ring[(lowest + n - 1) % n], ring[lowest], ring[(lowest + 1) % n]);
+}
+
 Location locate_point(const Ring& ring, Vec2 p) {
   bool inside = false;
   const std::size_t n = ring.size();
@@ -303,13 +319,17 @@ Location locate_point(const Region& region, Vec2 p) {
   return Location::inside;
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+SegmentProjection project_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double length2 = ab.x * ab.x + ab.y * ab.y;
   double t = length2 > 0.0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
   const Vec2 d = p - (a + ab * t);
-  return std::sqrt(d.x * d.x + d.y * d.y);
+  return {t, std::sqrt(d.x * d.x + d.y * d.y)};
+}
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  return project_on_segment(p, a, b).distance;
 }
 
 namespace {

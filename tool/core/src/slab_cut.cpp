@@ -5,14 +5,17 @@
 // last) crossing lies between the hole and another ring; cutting it out along its top and bottom
 // joins the hole to that ring: to ∂P0 (the hole opens) or to another hole (the two merge). The
 // cuts end on the edges at new vertices, or at the edges' own vertices where the slab's bounds
-// allow.
+// allow; no cut grazes a vertex.
 #include "cut.h"
+#include "sight.h"
 
 #include "hullcook/core/clean.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace hullcook::detail {
@@ -40,6 +43,19 @@ Vec2 point_at_height(Vec2 a, Vec2 b, double y) {
   if (y == b.y) return b;
   const double x = a.x + (y - a.y) * ((b.x - a.x) / (b.y - a.y));
   return {std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x)), y};
+}
+
+// The same, moved by whole ulps off the edge's outer side where rounding put it there: a new vertex
+// on the edge a-b of a ring (whose region lies left of a-b) lies in the region or on its boundary,
+// exactly, so that the pieces never reach outside the region.
+Vec2 vertex_at_height(Vec2 a, Vec2 b, double y) {
+  Vec2 p = point_at_height(a, b, y);
+  // Left of a downward edge is +x, of an upward one -x.
+  const double inward = a.y > b.y ? std::numeric_limits<double>::infinity()
+                                  : -std::numeric_limits<double>::infinity();
+  for (int step = 0; step < 8 && orientation(a, b, p) < 0; ++step)
+    p.x = std::nextafter(p.x, inward);
+  return p;
 }
 
 struct SlabCut {
@@ -128,17 +144,16 @@ class SlabCutter {
     if (!(left_ring[a].y > left_ring[b].y && right_ring[c].y < right_ring[d].y)) return;
     // A cut along a slab's bound must not pass through a vertex there; else a quarter in.
     const double quarter = (top - bottom) / 4;
-    const double low = clear_at(bottom, left_ring[a], left_ring[b], right_ring[c], right_ring[d])
-                           ? bottom
-                           : bottom + quarter;
-    const double high = clear_at(top, left_ring[a], left_ring[b], right_ring[c], right_ring[d])
-                            ? top
-                            : top - quarter;
-    if (!(low < high)) return;
-    const Vec2 left_low = point_at_height(left_ring[a], left_ring[b], low);
-    const Vec2 left_high = point_at_height(left_ring[a], left_ring[b], high);
-    const Vec2 right_low = point_at_height(right_ring[c], right_ring[d], low);
-    const Vec2 right_high = point_at_height(right_ring[c], right_ring[d], high);
+    auto clear = [&](double y) {
+      return clear_at(y, left_ring[a], left_ring[b], right_ring[c], right_ring[d]);
+    };
+    const double low = clear(bottom) ? bottom : bottom + quarter;
+    const double high = clear(top) ? top : top - quarter;
+    if (!(low < high) || !clear(low) || !clear(high)) return;
+    const Vec2 left_low = vertex_at_height(left_ring[a], left_ring[b], low);
+    const Vec2 left_high = vertex_at_height(left_ring[a], left_ring[b], high);
+    const Vec2 right_low = vertex_at_height(right_ring[c], right_ring[d], low);
+    const Vec2 right_high = vertex_at_height(right_ring[c], right_ring[d], high);
     const double width = std::min(right_low.x - left_low.x, right_high.x - left_high.x);
     if (!(width > separation_)) return;
     const double quality = std::min(width, high - low);
@@ -184,12 +199,20 @@ class SlabCutter {
     best = std::move(found);
   }
 
-  // No vertex lies on the open cut at height y between the two edges.
+  // The cut at height y between the two edges neither passes through nor grazes a vertex (see
+  // Graze), and its ends are the edges' own vertices or new ones clear of them (a new vertex
+  // within rounding of an old one would leave a sliver).
   bool clear_at(double y, Vec2 a, Vec2 b, Vec2 c, Vec2 d) const {
-    const double from = point_at_height(a, b, y).x, to = point_at_height(c, d, y).x;
+    const Vec2 from = vertex_at_height(a, b, y), to = vertex_at_height(c, d, y);
+    const Graze cut(from, to);
+    const double apart = 2.0 * kSliverAreaFraction * (to.x - from.x);
+    auto clear_of_ends = [&](Vec2 end, Vec2 p, Vec2 q) {
+      return end == p || end == q || (distance(end, p) > apart && distance(end, q) > apart);
+    };
+    if (!clear_of_ends(from, a, b) || !clear_of_ends(to, c, d)) return false;
     bool clear = true;
     for_each_vertex([&](Vec2 p) {
-      if (p.y == y && from < p.x && p.x < to) clear = false;
+      if (p != from && p != to && cut.by(p)) clear = false;
     });
     return clear;
   }

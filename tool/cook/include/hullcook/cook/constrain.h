@@ -7,13 +7,14 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hullcook {
 
 struct EngineLimits {
   std::size_t max_verts = 8;  // per hull; 0 = unlimited
-  double weld = 0.005;        // [output units] minimum distance between two hull vertices
+  double weld = 0.005;        // [output units] minimum distance between two hull vertices; 0: none
 };
 
 // A vertex is collinear with its neighbours (and removed) when it is closer than this fraction
@@ -31,14 +32,26 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 //    than weld and no vertex within kCollinearFractionOfWeld * weld of its neighbours' line;
 //  - each component inside its hull, and each component vertex within max(tau, its distance
 //    before) of its hull's boundary;
-//  - every hull point within tau of its component.
-// Hulls only grow (edges are removed by extending their neighbours) or components are split
-// further with split. A piece that cannot meet the limits (smaller than the weld distance) is
-// left out and reported in warnings, never dropped silently.
+//  - every point of every hull within tau of the outline (the union of the components), proven
+//    rather than sampled;
+//  - the components partitioning the outline: no piece is ever dropped.
+// Hulls only grow (edges are removed by extending their neighbours), within tau of their own
+// component: stricter than the outline, it keeps each hull on its piece rather than spread over
+// its neighbours. Or components are split further with split, down to convex pieces and halves
+// of them. split must also measure a component whole: called with tau itself, it returns one
+// piece exactly when the component needs no split.
+// A piece too small for the weld (thinner than weld, or left so by the splits) is merged into the
+// neighbour it shares the longest cut with, when the merged component is one piece at tau and its
+// hull then meets the limits; otherwise it is given the smallest engine-ready rectangle or
+// triangle around it (about weld across) that stays within tau of the outline, over its
+// neighbours if need be. Neither is possible only where tau is below the weld, at the outline's
+// edge (tau = 0 on a sliver there, or tau a fraction of weld): no hull within tau exists that the
+// engine would accept unchanged, so it throws InputError naming source and the piece (lower the
+// weld or raise tau) rather than drop the piece or write a hull beyond tau.
+// The pieces keep their order; a merged piece takes its neighbour's place.
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
-                                             const SplitComponent& split,
-                                             std::vector<std::string>& warnings);
+                                             const SplitComponent& split, std::string_view source);
 
 // True when hull meets the limits' vertex count, weld and collinearity rules and is a convex,
 // counter-clockwise polygon with at least 3 vertices.

@@ -13,8 +13,8 @@ namespace hullcook {
 // finest first, hulls after the engine limits), "pixels_per_unit" and "pivot", "image"
 // ({width, height}) for traced images, "quantization_error" for hulls read back from a bundle,
 // "physics" when the asset has properties, "warnings" when there are any, and
-// stats.traced_vertices, stats.decode_ms and stats.trace_ms. Deterministic but for the *_ms
-// timings.
+// stats.traced_vertices, stats.decode_ms, stats.trace_ms and stats.contract_ms. Deterministic but
+// for the *_ms timings.
 std::string debug_json(const std::vector<CookedAsset>& assets);
 
 }  // namespace hullcook

@@ -30,4 +30,10 @@ struct UsageError : Error {
   explicit UsageError(const std::string& message) : Error(ExitCode::usage, message) {}
 };
 
+// The cooker broke its own output contract (issue 16): a bug, caught before anything is written.
+// The message names the asset and the first violation.
+struct ContractError : Error {
+  explicit ContractError(const std::string& message) : Error(ExitCode::internal, message) {}
+};
+
 }  // namespace hullcook

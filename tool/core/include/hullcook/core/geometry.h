@@ -33,6 +33,10 @@ std::vector<std::size_t> simple_polygon_hull_indices(const Ring& ring, std::size
 void simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex,
                                  std::vector<std::size_t>& hull);
 
+// The orientation of a simple ring, exactly: +1 counter-clockwise, -1 clockwise, 0 for none (no
+// turn at its lowest vertex, or fewer than 3 vertices).
+int ring_orientation(const Ring& ring);
+
 enum class Location { outside, boundary, inside };
 
 // Where p lies with respect to the closed ring (either orientation), exactly.
@@ -43,6 +47,14 @@ Location locate_point(const Region& region, Vec2 p);
 
 // Euclidean distance from p to the closed segment ab [units].
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
+
+// The point of the closed segment ab nearest to p: its parameter (0 at a, 1 at b; exactly 0 or 1
+// when it is an end) and its distance from p [units].
+struct SegmentProjection {
+  double along;
+  double distance;
+};
+SegmentProjection project_on_segment(Vec2 p, Vec2 a, Vec2 b);
 
 struct Circle {
   Vec2 center{0.0, 0.0};

@@ -1,0 +1,295 @@
+// The cooker's own contract check (issue 16): a sprite cooked by cook() keeps it, and each rule
+// broken on purpose in that output is named, with the piece.
+#include "contract.h"
+
+#include "hullcook/cook/contract.h"
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/clean.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/poly_io.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+namespace hullcook {
+namespace {
+
+const std::filesystem::path kSprites =
+    std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+
+const EngineLimits kLimits{8, kDefaultWeld};
+
+// A sprite with holes and many pieces, cooked once at τ 2 px (1 px per unit).
+const CookedAsset& grid_sprite() {
+  static const CookedAsset asset = [] {
+    Settings settings;
+    settings.tau = Tolerance{2.0, false};
+    return cook({kSprites / "pingus__groundpieces__bridge__space__grid1.png"}, settings)
+        .assets.at(0);
+  }();
+  return asset;
+}
+
+std::vector<std::string> violations_of(const CookedAsset& asset,
+                                       const EngineLimits& limits = kLimits) {
+  return find_contract_violations(asset.pieces, asset.regions,
+                                  {asset.tau, *parse_measure(asset.measure), limits});
+}
+
+std::string listed(const std::vector<std::string>& violations) {
+  std::string text;
+  for (const std::string& violation : violations) text += "\n  " + violation;
+  return text.empty() ? " none" : text;
+}
+
+// Whether a violation names piece (0-based here, 1-based in the message) and says problem.
+bool names(const std::vector<std::string>& violations, std::size_t piece,
+           const std::string& problem) {
+  const std::string prefix = "piece " + std::to_string(piece + 1) + ": ";
+  return std::any_of(violations.begin(), violations.end(), [&](const std::string& violation) {
+    return violation.starts_with(prefix) && violation.find(problem) != std::string::npos;
+  });
+}
+
+bool says(const std::vector<std::string>& violations, const std::string& problem) {
+  return std::any_of(violations.begin(), violations.end(), [&](const std::string& violation) {
+    return violation.find(problem) != std::string::npos;
+  });
+}
+
+// The first piece whose hull has at least this many vertices.
+std::size_t piece_with_hull_of(const CookedAsset& asset, std::size_t vertices) {
+  for (std::size_t k = 0; k < asset.pieces.size(); ++k) {
+    if (asset.pieces[k].hull.size() >= vertices) return k;
+  }
+  ADD_FAILURE() << "no hull of " << vertices << " vertices";
+  return 0;
+}
+
+bool strictly_convex(const Ring& ring) {
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2 a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+    if (test::cross2(b - a, c - b) <= 0) return false;
+  }
+  return true;
+}
+
+TEST(Contract, CookedSpriteKeepsIt) {
+  const CookedAsset& asset = grid_sprite();
+  ASSERT_GT(asset.pieces.size(), 20u);
+  EXPECT_TRUE(violations_of(asset).empty()) << listed(violations_of(asset));
+}
+
+TEST(Contract, DroppedPieceBreaksThePartition) {
+  CookedAsset asset = grid_sprite();
+  asset.pieces.erase(asset.pieces.begin() + 5);
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(says(violations, "the pieces' areas add up to")) << listed(violations);
+  EXPECT_TRUE(says(violations, "the pieces do not partition the outline")) << listed(violations);
+}
+
+TEST(Contract, PiecesWhoseAreasAddUpInTheWrongPlaceBreakThePartition) {
+  // The left half of a 2 x 1 rectangle twice: the areas add up, the right half is left out.
+  const Region rectangle{{{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {}};
+  const Ring left{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const CookedPiece half{Region{left, {}}, left, 0.0};
+  const std::vector<std::string> violations =
+      find_contract_violations({half, half}, {rectangle}, {0.5, Measure::h1, kLimits});
+  EXPECT_FALSE(says(violations, "areas")) << listed(violations);
+  EXPECT_TRUE(says(violations, "the pieces do not partition the outline")) << listed(violations);
+}
+
+TEST(Contract, ShrunkHullIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = 7;
+  Ring& hull = asset.pieces[k].hull;
+  Vec2 centre{0, 0};
+  for (Vec2 v : hull) centre += v / double(hull.size());
+  for (Vec2& v : hull) v = centre + 0.9 * (v - centre);
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(names(violations, k, "outside its hull")) << listed(violations);
+}
+
+TEST(Contract, HullOfNineVerticesIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = piece_with_hull_of(asset, 5);
+  Ring& hull = asset.pieces[k].hull;
+  // Edges 0, 1, ... get a vertex at their middle, pushed out by a thousandth of their length: the
+  // hull stays convex, with no vertex nearly collinear.
+  const Ring original = hull;
+  hull.clear();
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    const Vec2 a = original[i], b = original[(i + 1) % original.size()];
+    hull.push_back(a);
+    if (original.size() + i < 9) hull.push_back(0.5 * (a + b) + 1e-3 * Vec2{(b - a).y, -(b - a).x});
+  }
+  ASSERT_EQ(hull.size(), 9u);
+  ASSERT_TRUE(strictly_convex(hull));
+
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(names(violations, k, "its hull has 9 vertices (at most 8)")) << listed(violations);
+  // Without a vertex limit the same hull is no fault of its own.
+  EXPECT_FALSE(names(violations_of(asset, {0, kDefaultWeld}), k, "hull"))
+      << listed(violations_of(asset, {0, kDefaultWeld}));
+}
+
+TEST(Contract, HullVertexMovedOutByMoreThanTauIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const double tau = asset.tau;
+  // A hull vertex moved 1.1 τ away from its hull's centre that then lies beyond τ of the outline
+  // (measured here independently) and keeps the hull convex.
+  for (std::size_t k = 0; k < asset.pieces.size(); ++k) {
+    Ring hull = asset.pieces[k].hull;
+    Vec2 centre{0, 0};
+    for (Vec2 v : hull) centre += v / double(hull.size());
+    for (Vec2& v : hull) {
+      const Vec2 original = v;
+      v += 1.1 * tau * glm::normalize(v - centre);
+      if (strictly_convex(hull) && test::distance_to_regions(v, asset.regions) > tau * 1.05) {
+        asset.pieces[k].hull = hull;
+        const std::vector<std::string> violations = violations_of(asset);
+        EXPECT_TRUE(names(violations, k, "its hull's vertex")) << listed(violations);
+        EXPECT_TRUE(names(violations, k, "beyond the outline (τ 2)")) << listed(violations);
+        return;
+      }
+      v = original;
+    }
+  }
+  FAIL() << "no hull vertex to move";
+}
+
+// The violations of one piece over outline at tolerance tau.
+std::vector<std::string> one_piece_at(const CookedPiece& piece, const Region& outline, double tau) {
+  return find_contract_violations({piece}, {outline}, {tau, Measure::h1, kLimits});
+}
+
+// A 10 x 10 square with a slot 2 wide and 7 deep from the top, as one piece under the square.
+Region slotted_square() {
+  return {{{0, 0}, {10, 0}, {10, 10}, {6, 10}, {6, 3}, {4, 3}, {4, 10}, {0, 10}}, {}};
+}
+
+TEST(Contract, HullEdgeBeyondTauBetweenVerticesOnTheOutlineIsNamed) {
+  // The hull's top edge spans the slot: its vertices lie on the outline, its middle 1 from it.
+  const Region region = slotted_square();
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const CookedPiece piece{region, square, 0.0};
+  const std::vector<std::string> beyond = one_piece_at(piece, region, 0.9);
+  EXPECT_TRUE(names(beyond, 0, "its hull's point (5, 10) lies 1 beyond the outline (τ 0.9)"))
+      << listed(beyond);
+  const std::vector<std::string> within = one_piece_at(piece, region, 1.01);
+  EXPECT_FALSE(says(within, "beyond the outline")) << listed(within);
+}
+
+TEST(Contract, ComponentEdgeFartherThanTauFromItsHullBetweenVerticesWithinIsNamed) {
+  // A square with a corner cut off, under the whole square: both ends of the cut lie on the hull's
+  // boundary, the cut's middle (9, 9) lies 1 from it. Checking vertices alone misses it.
+  const Region cut_square{{{0, 0}, {10, 0}, {10, 8}, {8, 10}, {0, 10}}, {}};
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const CookedPiece piece{cut_square, square, 0.0};
+  const std::vector<std::string> far = one_piece_at(piece, cut_square, 0.9);
+  EXPECT_TRUE(names(far, 0, "its component's point (9, 9) lies 1 from its hull's boundary (τ 0.9)"))
+      << listed(far);
+  const std::vector<std::string> near = one_piece_at(piece, cut_square, 1.01);
+  EXPECT_FALSE(says(near, "from its hull's boundary")) << listed(near);
+}
+
+TEST(Contract, WeldedVerticesAreNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = piece_with_hull_of(asset, 4);
+  Ring& hull = asset.pieces[k].hull;
+  // Vertex 0 slides along its edge to half the weld distance from vertex 1: still convex.
+  hull[0] = hull[1] + (hull[0] - hull[1]) * (0.5 * kDefaultWeld / glm::length(hull[0] - hull[1]));
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(names(violations, k, "apart (weld 0.005)")) << listed(violations);
+}
+
+TEST(Contract, ClockwiseHullIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = 2;
+  std::reverse(asset.pieces[k].hull.begin(), asset.pieces[k].hull.end());
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(names(violations, k, "its hull is clockwise")) << listed(violations);
+}
+
+TEST(Contract, ComponentOutsideTheOutlineIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = 4;
+  for (Vec2& v : asset.pieces[k].component.outer) v += Vec2{0.5, 0};
+  for (Vec2& v : asset.pieces[k].hull) v += Vec2{0.5, 0};
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(says(violations, "the pieces do not partition the outline")) << listed(violations);
+}
+
+TEST(Contract, ClockwiseComponentIsNamed) {
+  CookedAsset asset = grid_sprite();
+  const std::size_t k = 6;
+  Ring& outer = asset.pieces[k].component.outer;
+  std::reverse(outer.begin(), outer.end());
+  const std::vector<std::string> violations = violations_of(asset);
+  EXPECT_TRUE(names(violations, k, "outer ring is not counter-clockwise")) << listed(violations);
+}
+
+// Issue 16's square with four diamond holes, whose holes see no vertex of the outer boundary.
+Region square_with_four_diamonds() {
+  Region region{{{0, 0}, {25, 0}, {25, 25}, {0, 25}}, {}};
+  for (Vec2 centre : {Vec2{7, 7}, Vec2{7, 18}, Vec2{18, 7}, Vec2{18, 18}}) {
+    region.holes.push_back(
+        {centre + Vec2{0, 5}, centre + Vec2{5, 0}, centre + Vec2{0, -5}, centre + Vec2{-5, 0}});
+  }
+  return clean_and_validate({region}, "four diamonds").front();
+}
+
+TEST(Contract, PieceKeepingHolesDeeperThanTauIsNamed) {
+  const Region region = square_with_four_diamonds();
+  const CookedPiece whole{region, region.outer, 0.0};
+  for (Measure measure : {Measure::sl, Measure::sp, Measure::h1, Measure::h2}) {
+    SCOPED_TRACE(measure_name(measure));
+    const std::vector<std::string> violations =
+        find_contract_violations({whole}, {region}, {1.0, measure, kLimits});
+    EXPECT_TRUE(names(violations, 0, "its concavity, measured afresh")) << listed(violations);
+    // The holes' boundary lies up to 7 from the square's.
+    EXPECT_TRUE(names(violations, 0, "from its hull's boundary (τ 1)")) << listed(violations);
+  }
+  // At a τ above every hole's depth, the one piece keeps the contract.
+  EXPECT_TRUE(find_contract_violations({whole}, {region}, {30.0, Measure::h1, kLimits}).empty());
+}
+
+TEST(Contract, SliverPieceIsNamed) {
+  // A triangle cut off a square along a diagonal that misses a corner by 1e-12.
+  const Region square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}};
+  const Ring sliver{{10, 10 - 1e-12}, {10, 10}, {0, 0}};
+  const Ring rest{{0, 0}, {10, 0}, {10, 10 - 1e-12}};
+  const Ring left{{0, 0}, {10, 10}, {0, 10}};
+  const std::vector<CookedPiece> pieces{{Region{rest, {}}, rest, 0.0},
+                                        {Region{sliver, {}}, sliver, 0.0},
+                                        {Region{left, {}}, left, 0.0}};
+  const std::vector<std::string> violations =
+      find_contract_violations(pieces, {square}, {0.5, Measure::h1, {0, 0.0}});
+  EXPECT_TRUE(names(violations, 1, "its component is a sliver")) << listed(violations);
+  EXPECT_FALSE(names(violations, 0, "sliver")) << listed(violations);
+}
+
+TEST(Contract, AViolationIsAnInternalErrorNamingTheAssetAndTheFirst) {
+  CookedAsset asset = grid_sprite();
+  std::reverse(asset.pieces[2].hull.begin(), asset.pieces[2].hull.end());
+  asset.pieces.erase(asset.pieces.begin() + 5);
+  const std::vector<std::string> violations = violations_of(asset);
+  ASSERT_GE(violations.size(), 3u) << listed(violations);
+  try {
+    enforce_contract(asset.source, violations);
+    FAIL() << "no error";
+  } catch (const ContractError& error) {
+    EXPECT_EQ(error.code, ExitCode::internal);
+    EXPECT_EQ(std::string(error.what()),
+              asset.source + ": internal error: the output breaks its contract: " +
+                  violations.front() + " (and " + std::to_string(violations.size() - 1) + " more)");
+  }
+  EXPECT_NO_THROW(enforce_contract(asset.source, {}));
+}
+
+}  // namespace
+}  // namespace hullcook

@@ -1,0 +1,46 @@
+// The output contract (issue 16), checked by the cooker itself on every run before anything is
+// written: a violation is a bug in the cooker, reported as an internal error (exit 4) instead of
+// being shipped with exit 0.
+#pragma once
+
+#include "hullcook/cook/asset.h"
+#include "hullcook/cook/constrain.h"
+#include "hullcook/core/decompose.h"
+
+#include <string>
+#include <vector>
+
+namespace hullcook {
+
+// What one level of detail promises.
+struct ContractTerms {
+  double tau = 0.0;               // [output units] the level's tolerance
+  Measure measure = Measure::h1;  // the measure the pieces were cut under
+  EngineLimits limits{0, 0.0};    // the hulls' engine limits; {0, 0}: convex hulls, nothing more
+};
+
+// The ways one level's pieces (components and final hulls, in output units) break the contract
+// for an asset whose cleaned outline is `outline`; empty when they keep it. Each names the piece
+// (1-based, in order) and the figures, e.g. "piece 3: hull vertex (12.5, 4) lies 4.03 beyond the
+// outline (τ 4)". The contract:
+//  - partition: every component is a valid region (a simple counter-clockwise outer ring with
+//    clockwise holes inside it) and no sliver (thinner than 1e-9 of its length); their areas add
+//    up to the outline's (relative 1e-9); their boundaries cancel the outline's edge for edge (an
+//    edge left over is a gap or an overlap);
+//  - every component within τ of its hull: its concavity measured afresh (measure_concavity, not
+//    the decomposition's bookkeeping), and geometrically every point of its boundary inside the
+//    hull and within τ of the hull's boundary;
+//  - every hull: at least 3 vertices, convex and counter-clockwise (exact predicates), within the
+//    limits (hull_meets_limits) unless they are {0, 0};
+//  - every hull point within τ of the outline (vertices and edges, rigorously).
+// Lengths are compared with a slack for rounding only: 1e-9 of the outline's extent, or of a
+// thousandth of its largest coordinate when that is more (an outline far from the origin).
+std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
+                                                  const std::vector<Region>& outline,
+                                                  const ContractTerms& terms);
+
+// Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
+// more)" when there are violations.
+void enforce_contract(const std::string& source, const std::vector<std::string>& violations);
+
+}  // namespace hullcook

@@ -1,0 +1,571 @@
+#include "hullcook/cook/contract.h"
+
+#include "cell_grid.h"
+#include "outline_distance.h"
+
+#include "hullcook/core/clean.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+namespace hullcook {
+namespace {
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+std::string point(Vec2 p) { return "(" + number(p.x) + ", " + number(p.y) + ")"; }
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// The rounding slack of every length compared (see contract.h).
+double rounding_slack(const std::vector<Region>& outline) {
+  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
+  double largest = 0.0;
+  for (const Region& region : outline) {
+    for (Vec2 p : region.outer) {
+      low = glm::min(low, p), high = glm::max(high, p);
+      largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    }
+  }
+  const double extent = std::max(high.x - low.x, high.y - low.y);
+  return 1e-9 * std::max(extent, 1e-3 * largest);
+}
+
+// --- The components: valid regions, no slivers. --------------------------------------------
+
+// Sets cleaned to the component without repeated or collinear vertices (what is measured).
+std::optional<std::string> component_defect(const Region& component, double slack,
+                                            Region& cleaned) {
+  try {
+    cleaned = std::move(clean_and_validate({component}, "").front());
+  } catch (const InputError& error) {
+    // "': region 1 outer boundary: self-intersection ..." names the component's own rings.
+    std::string problem = error.what();
+    for (const char* prefix : {": region 1: ", ": region 1 ", ": "}) {
+      if (problem.starts_with(prefix)) {
+        problem.erase(0, std::string(prefix).size());
+        break;
+      }
+    }
+    return "its component is not a valid region: " + problem;
+  }
+  // clean_and_validate orients the rings it cleans: the pieces' own orientation is checked here.
+  if (ring_orientation(component.outer) <= 0) {
+    return std::string("its component's outer ring is not counter-clockwise");
+  }
+  for (std::size_t h = 0; h < component.holes.size(); ++h) {
+    if (ring_orientation(component.holes[h]) >= 0) {
+      return "its component's hole " + std::to_string(h + 1) + " is not clockwise";
+    }
+  }
+  // A sliver: zero area but for rounding, thinner than a billionth of its length.
+  Vec2 low = component.outer.front(), high = low;
+  for (Vec2 p : component.outer) low = glm::min(low, p), high = glm::max(high, p);
+  const double length = std::hypot(high.x - low.x, high.y - low.y);
+  const double area = region_area(component);
+  if (area <= length * std::max(1e-9 * length, slack)) {
+    return "its component is a sliver: area " + number(area) + " over a length of " +
+           number(length);
+  }
+  return std::nullopt;
+}
+
+// --- The hulls: convex, counter-clockwise, within the engine limits. ------------------------
+
+// Height of vertex i above the line through its neighbours (negative for a reflex turn).
+double turn_height(const Ring& ring, std::size_t i) {
+  const std::size_t n = ring.size();
+  const Vec2 previous = ring[(i + n - 1) % n], next = ring[(i + 1) % n];
+  const double base = glm::length(next - previous);
+  return base > 0.0 ? cross(next - previous, previous - ring[i]) / base : 0.0;
+}
+
+// Why a hull that hull_meets_limits refuses is refused.
+std::string limits_defect(const Ring& hull, const EngineLimits& limits) {
+  const std::size_t n = hull.size();
+  if (limits.max_verts != 0 && n > limits.max_verts) {
+    return "its hull has " + std::to_string(n) + " vertices (at most " +
+           std::to_string(limits.max_verts) + ")";
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double apart = glm::length(hull[i] - hull[j]);
+      if (apart < limits.weld) {
+        return "its hull's vertices " + point(hull[i]) + " and " + point(hull[j]) + " are " +
+               number(apart) + " apart (weld " + number(limits.weld) + ")";
+      }
+    }
+  }
+  const double collinear = kCollinearFractionOfWeld * limits.weld;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double height = turn_height(hull, i);
+    if (height < collinear) {
+      return "its hull's vertex " + point(hull[i]) + " is " + number(height) +
+             " from its neighbours' line (at least " + number(collinear) + ")";
+    }
+  }
+  return "its hull does not meet the engine limits";
+}
+
+struct HullDefect {
+  std::string problem;
+  bool convex;  // a convex polygon all the same (only the engine limits are broken)
+};
+
+std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limits) {
+  const std::size_t n = hull.size();
+  if (n < 3) return HullDefect{"its hull has " + std::to_string(n) + " vertices", false};
+  std::size_t left_turns = 0, first_other = n;
+  // Turning left at every vertex, a polygon that winds k times has 2k changes of vertical
+  // direction: once, it is convex.
+  std::size_t direction_changes = 0;
+  int first_direction = 0, last_direction = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orientation(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) > 0) {
+      ++left_turns;
+    } else if (first_other == n) {
+      first_other = i;
+    }
+    const double dy = hull[(i + 1) % n].y - hull[i].y;
+    const int direction = (dy > 0) - (dy < 0);
+    if (direction == 0) continue;
+    if (last_direction != 0 && direction != last_direction) ++direction_changes;
+    if (first_direction == 0) first_direction = direction;
+    last_direction = direction;
+  }
+  if (last_direction != first_direction) ++direction_changes;
+  if (left_turns == 0) return HullDefect{"its hull is clockwise", false};
+  if (first_other < n) {
+    return HullDefect{"its hull is not convex at its vertex " + point(hull[first_other]), false};
+  }
+  if (direction_changes > 2) {
+    return HullDefect{"its hull winds " + std::to_string(direction_changes / 2) + " times", false};
+  }
+  if ((limits.max_verts != 0 || limits.weld > 0) && !hull_meets_limits(hull, limits)) {
+    return HullDefect{limits_defect(hull, limits), true};
+  }
+  return std::nullopt;
+}
+
+// --- Each component within τ of its hull's boundary. ----------------------------------------
+
+// The lines of a convex hull's edges. Inside the hull, the distance to its boundary is the least
+// distance to these lines, and the distance to one line is affine along a segment: a segment
+// whose two ends lie within τ of one line lies within τ of the boundary.
+class HullLines {
+ public:
+  explicit HullLines(const Ring& hull) {
+    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+      const Vec2 edge = hull[(i + 1) % n] - hull[i];
+      from_.push_back(hull[i]);
+      direction_.push_back(edge / glm::length(edge));
+    }
+  }
+
+  std::size_t size() const { return from_.size(); }
+
+  // Positive inside (left of the counter-clockwise edge k).
+  double distance(std::size_t k, Vec2 p) const {
+    return direction_[k].x * (p.y - from_[k].y) - direction_[k].y * (p.x - from_[k].x);
+  }
+
+  // The least distance of p to the lines, and the line that gives it.
+  std::pair<double, std::size_t> nearest(Vec2 p) const {
+    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
+    for (std::size_t k = 0; k < size(); ++k) best = std::min(best, {distance(k, p), k});
+    return best;
+  }
+
+  // Whether one line lies within limit of both p and q (the nearest line of a point on two is
+  // either).
+  bool one_within(Vec2 p, Vec2 q, double limit) const {
+    for (std::size_t k = 0; k < size(); ++k) {
+      if (distance(k, p) <= limit && distance(k, q) <= limit) return true;
+    }
+    return false;
+  }
+
+  // The largest, over the segment pq, of the least distance to the lines, and where: a concave
+  // function of the position along pq, so its slope's sign leads a bisection to the top.
+  std::pair<double, Vec2> farthest_on(Vec2 p, Vec2 q) const {
+    auto at = [&](double t) { return p + (q - p) * t; };
+    double low = 0.0, high = 1.0;
+    for (int step = 0; step < 64 && low < high; ++step) {
+      const double middle = 0.5 * (low + high);
+      const std::size_t k = nearest(at(middle)).second;
+      (distance(k, q) > distance(k, p) ? low : high) = middle;
+    }
+    std::pair<double, Vec2> best{-std::numeric_limits<double>::infinity(), p};
+    for (double t : {0.0, low, high, 1.0}) {
+      const double value = nearest(at(t)).first;
+      if (value > best.first) best = {value, at(t)};
+    }
+    return best;
+  }
+
+ private:
+  std::vector<Vec2> from_, direction_;
+};
+
+// The worst of one kind of fault in a piece: only it is reported.
+struct Worst {
+  double value = -std::numeric_limits<double>::infinity();
+  Vec2 where{0.0, 0.0};
+  void offer(double candidate, Vec2 p) {
+    if (candidate > value) value = candidate, where = p;
+  }
+  bool found() const { return value > -std::numeric_limits<double>::infinity(); }
+};
+
+// Every point of the component's boundary inside the hull (outside by at most slack) and within
+// limit of its boundary.
+void check_component_in_hull(const Region& component, const HullLines& lines, double limit,
+                             double slack, Worst& outside, Worst& far) {
+  auto check_ring = [&](const Ring& ring) {
+    const std::size_t n = ring.size();
+    std::vector<std::pair<double, std::size_t>> nearest(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      nearest[i] = lines.nearest(ring[i]);
+      if (nearest[i].first < -slack) outside.offer(-nearest[i].first, ring[i]);
+      if (nearest[i].first > limit) far.offer(nearest[i].first, ring[i]);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      if (lines.distance(nearest[i].second, ring[j]) <= limit ||
+          lines.distance(nearest[j].second, ring[i]) <= limit ||
+          lines.one_within(ring[i], ring[j], limit)) {
+        continue;
+      }
+      const auto [distance, where] = lines.farthest_on(ring[i], ring[j]);
+      if (distance > limit) far.offer(distance, where);
+    }
+  };
+  check_ring(component.outer);
+  for (const Ring& hole : component.holes) check_ring(hole);
+}
+
+// --- Every hull point within τ of the outline. ----------------------------------------------
+
+// A hull vertex by its distance to the outline; a hull edge by OutlineDistance::segment_within,
+// which proves it exactly (the points of a segment within τ of one outline edge are an interval
+// of it). An edge it refuses holds a point beyond the limit: the farthest of a fine sampling
+// names the violation.
+class HullReach {
+ public:
+  HullReach(const OutlineDistance& outline, double limit) : outline_(outline), limit_(limit) {}
+
+  void vertex(Vec2 p, Worst& beyond) const {
+    const double distance = outline_.distance(p, limit_);
+    if (distance > limit_) beyond.offer(distance, p);
+  }
+
+  void edge(Vec2 a, Vec2 b, Worst& beyond) const {
+    if (outline_.segment_within(a, b, limit_)) return;
+    constexpr int kSamples = 256;
+    Worst farthest;
+    for (int k = 1; k < kSamples; ++k) {
+      const Vec2 p = a + (b - a) * (double(k) / kSamples);
+      farthest.offer(outline_.distance(p, std::numeric_limits<double>::infinity()), p);
+    }
+    // Between two samples, when the sampling missed it: at least the limit.
+    beyond.offer(std::max(farthest.value, limit_), farthest.where);
+  }
+
+ private:
+  const OutlineDistance& outline_;
+  double limit_;
+};
+
+// Where each hull vertex stands in the component's outer ring (ring.size() where it does not):
+// the hull's vertices that are the ring's come in the ring's order, so one walk round the ring
+// finds them (a vertex the engine limits added costs a walk round it).
+std::vector<std::size_t> hull_vertices_in_ring(const Ring& hull, const Ring& ring) {
+  const std::size_t n = ring.size();
+  std::vector<std::size_t> index(hull.size(), n);
+  std::size_t from = 0;
+  for (std::size_t k = 0; k < hull.size(); ++k) {
+    for (std::size_t step = 0, i = from; step < n; ++step, i = i + 1 == n ? 0 : i + 1) {
+      if (ring[i] == hull[k]) {
+        index[k] = i;
+        from = i;
+        break;
+      }
+    }
+  }
+  return index;
+}
+
+// --- The partition. -------------------------------------------------------------------------
+
+// A stretch of boundary, from before to, lexicographically, run weight times that way.
+struct Stretch {
+  Vec2 from, to;
+  int weight;
+  std::size_t ring;  // where it came from (see RingOf)
+};
+
+bool lexicographically_less(Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+void add_stretch(Vec2 a, Vec2 b, int weight, std::size_t ring, std::vector<Stretch>& stretches) {
+  if (a == b) return;
+  if (lexicographically_less(a, b)) {
+    stretches.push_back({a, b, weight, ring});
+  } else {
+    stretches.push_back({b, a, -weight, ring});
+  }
+}
+
+// Sums the weights of equal stretches; keeps those that do not cancel, with their sum.
+void cancel(std::vector<Stretch>& stretches) {
+  std::sort(stretches.begin(), stretches.end(), [](const Stretch& x, const Stretch& y) {
+    if (x.from != y.from) return lexicographically_less(x.from, y.from);
+    if (x.to != y.to) return lexicographically_less(x.to, y.to);
+    return x.ring < y.ring;
+  });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < stretches.size();) {
+    std::size_t j = i;
+    int sum = 0;
+    for (; j < stretches.size() && stretches[j].from == stretches[i].from &&
+           stretches[j].to == stretches[i].to;
+         ++j) {
+      sum += stretches[j].weight;
+    }
+    if (sum != 0) stretches[kept++] = {stretches[i].from, stretches[i].to, sum, stretches[i].ring};
+    i = j;
+  }
+  stretches.resize(kept);
+}
+
+// The same, in linear time, but for the order of what is left (for the many stretches of all
+// the pieces, most of which cancel).
+void cancel_by_hash(std::vector<Stretch>& stretches) {
+  auto mix = [](std::uint64_t hash, double value) {
+    hash ^= std::bit_cast<std::uint64_t>(value + 0.0);  // + 0.0: -0 and 0 are equal
+    hash *= 0x9E3779B97F4A7C15ull;
+    return hash ^ (hash >> 32);
+  };
+  std::size_t capacity = 16;
+  while (capacity < 2 * stretches.size()) capacity *= 2;
+  constexpr std::size_t kEmpty = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> slots(capacity, kEmpty);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < stretches.size(); ++i) {
+    const Stretch stretch = stretches[i];
+    const std::uint64_t hash =
+        mix(mix(mix(mix(0, stretch.from.x), stretch.from.y), stretch.to.x), stretch.to.y);
+    for (std::size_t slot = hash & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+      if (slots[slot] == kEmpty) {
+        slots[slot] = kept;
+        stretches[kept++] = stretch;
+        break;
+      }
+      Stretch& same = stretches[slots[slot]];
+      if (same.from == stretch.from && same.to == stretch.to) {
+        same.weight += stretch.weight;
+        break;
+      }
+    }
+  }
+  stretches.resize(kept);
+  std::erase_if(stretches, [](const Stretch& stretch) { return stretch.weight == 0; });
+}
+
+// Cuts every stretch at the ends of the others that lie on it (within slack).
+std::vector<Stretch> cut_at_ends(const std::vector<Stretch>& stretches, double slack) {
+  std::vector<Vec2> ends;
+  for (const Stretch& stretch : stretches) ends.push_back(stretch.from), ends.push_back(stretch.to);
+  Vec2 low = ends.front(), high = low;
+  for (Vec2 p : ends) low = glm::min(low, p), high = glm::max(high, p);
+  const detail::CellGrid grid(low, high, ends.size());
+  const detail::CellBuckets buckets(grid.cells(), ends.size(), [&](std::size_t e, auto&& add) {
+    add(grid.cell(grid.column(ends[e].x), grid.row(ends[e].y)));
+  });
+  const double margin = slack + 1e-6 * grid.cell_size();
+  std::vector<Stretch> cut;
+  std::vector<std::pair<double, Vec2>> cuts;
+  for (const Stretch& stretch : stretches) {
+    const Vec2 a = stretch.from, b = stretch.to, ab = b - a;
+    cuts.clear();
+    grid.for_each_cell(a, b, margin, [&](std::size_t cell) {
+      for (const std::size_t* e = buckets.begin(cell); e != buckets.end(cell); ++e) {
+        const Vec2 p = ends[*e];
+        const double along = glm::dot(p - a, ab) / glm::dot(ab, ab);
+        if (along > 0.0 && along < 1.0 && p != a && p != b &&
+            point_segment_distance(p, a, b) <= slack) {
+          cuts.emplace_back(along, p);
+        }
+      }
+    });
+    std::sort(cuts.begin(), cuts.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    Vec2 from = a;
+    for (const auto& [along, p] : cuts) {
+      add_stretch(from, p, stretch.weight, stretch.ring, cut);
+      from = p;
+    }
+    add_stretch(from, b, stretch.weight, stretch.ring, cut);
+  }
+  return cut;
+}
+
+// Components that partition the outline have boundaries that cancel the outline's as chains:
+// every stretch of an edge is run as often one way as the other, counting the outline's edges
+// backwards. (A valid component's winding number is 1 inside it and 0 outside, so then the sum of
+// the components' equals the outline's everywhere: no point in two, none left out.) Equal edges
+// cancel first; a piece may keep a vertex on a straight stretch where its neighbour has none, so
+// the edges left are then cut at each other's ends (the cuts that cancel edges elsewhere cancel
+// on both sides of them alike) and cancelled again.
+std::optional<std::string> partition_defect(const std::vector<CookedPiece>& pieces,
+                                            const std::vector<Region>& outline, double slack) {
+  struct RingOf {
+    const Ring* ring;
+    int weight;  // +1 for a component's ring, -1 for the outline's
+    std::size_t piece;
+  };
+  std::vector<RingOf> rings;
+  auto add = [&](const Region& region, int weight, std::size_t piece) {
+    rings.push_back({&region.outer, weight, piece});
+    for (const Ring& hole : region.holes) rings.push_back({&hole, weight, piece});
+  };
+  for (std::size_t k = 0; k < pieces.size(); ++k) add(pieces[k].component, 1, k);
+  for (const Region& region : outline) add(region, -1, 0);
+  std::vector<Stretch> stretches;
+  std::size_t edges = 0;
+  for (const RingOf& ring : rings) edges += ring.ring->size();
+  stretches.reserve(edges);
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r].ring;
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      add_stretch(ring[i], ring[(i + 1) % n], rings[r].weight, r, stretches);
+    }
+  }
+  cancel_by_hash(stretches);
+  if (stretches.empty()) return std::nullopt;
+  stretches = cut_at_ends(stretches, slack);
+  cancel(stretches);
+  if (stretches.empty()) return std::nullopt;
+  const Stretch& first = stretches.front();
+  const RingOf& ring = rings[first.ring];
+  const std::string whose =
+      ring.weight < 0 ? "of the outline" : "of piece " + std::to_string(ring.piece + 1);
+  return "the pieces do not partition the outline (a gap or an overlap): " +
+         std::to_string(stretches.size()) + " stretch" + (stretches.size() > 1 ? "es" : "") +
+         " of boundary unmatched, the first " + point(first.from) + "-" + point(first.to) + " " +
+         whose;
+}
+
+}  // namespace
+
+std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
+                                                  const std::vector<Region>& outline,
+                                                  const ContractTerms& terms) {
+  std::vector<std::string> violations;
+  if (outline.empty()) {
+    if (!pieces.empty()) violations.push_back(std::to_string(pieces.size()) + " pieces of nothing");
+    return violations;
+  }
+  const double slack = rounding_slack(outline);
+  const double limit = terms.tau + slack;
+  const std::string tau = " (τ " + number(terms.tau) + ")";
+
+  double pieces_area = 0.0, outline_area = 0.0;
+  for (const CookedPiece& piece : pieces) pieces_area += region_area(piece.component);
+  for (const Region& region : outline) outline_area += region_area(region);
+  if (!(std::abs(pieces_area - outline_area) <= 1e-9 * outline_area)) {
+    violations.push_back("the pieces' areas add up to " + number(pieces_area) +
+                         ", the outline's to " + number(outline_area) + " (a difference of " +
+                         number(pieces_area - outline_area) + ")");
+  }
+  const std::optional<std::string> partition_problem = partition_defect(pieces, outline, slack);
+  if (partition_problem) violations.push_back(*partition_problem);
+  const bool partitioned = violations.empty();
+
+  std::vector<const Region*> regions;
+  for (const Region& region : outline) regions.push_back(&region);
+  const OutlineDistance outline_distance(regions);
+  const HullReach hull_reach(outline_distance, limit);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const CookedPiece& piece = pieces[k];
+    const std::string name = "piece " + std::to_string(k + 1) + ": ";
+    auto report = [&](const std::string& problem) { violations.push_back(name + problem); };
+    Region cleaned;
+    const std::optional<std::string> component_problem =
+        component_defect(piece.component, slack, cleaned);
+    if (component_problem) report(*component_problem);
+    const std::optional<HullDefect> hull_problem = hull_defect(piece.hull, terms.limits);
+    if (hull_problem) report(hull_problem->problem);
+
+    if (!component_problem) {
+      const double concavity = measure_concavity(cleaned, terms.measure, terms.tau);
+      if (concavity > limit) {
+        report("its concavity, measured afresh under " + std::string(measure_name(terms.measure)) +
+               ", is " + number(concavity) + tau);
+      }
+    }
+    // The distances below are measured by a convex polygon's edge lines.
+    if (hull_problem && !hull_problem->convex) continue;
+    Worst outside, far;
+    check_component_in_hull(piece.component, HullLines(piece.hull), limit, slack, outside, far);
+    if (outside.found()) {
+      report("its component's vertex " + point(outside.where) + " lies " + number(outside.value) +
+             " outside its hull");
+    }
+    if (far.found()) {
+      report("its component's point " + point(far.where) + " lies " + number(far.value) +
+             " from its hull's boundary" + tau);
+    }
+
+    // A hull vertex that is a vertex of its component lies in the outline when the components
+    // partition it (else that is reported already): only the others are measured.
+    Worst beyond;
+    const Ring& hull = piece.hull;
+    const std::vector<std::size_t> in_ring = hull_vertices_in_ring(hull, piece.component.outer);
+    const std::size_t ring_size = piece.component.outer.size();
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      if (!(in_ring[i] < ring_size && partitioned)) hull_reach.vertex(hull[i], beyond);
+    }
+    if (beyond.found()) {
+      report("its hull's vertex " + point(beyond.where) + " lies " + number(beyond.value) +
+             " beyond the outline" + tau);
+      continue;
+    }
+    // A hull edge that is an edge of the component lies in the outline likewise.
+    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+      const std::size_t from = in_ring[i], to = in_ring[(i + 1) % n];
+      const bool on_component = partitioned && from < ring_size && to < ring_size &&
+                                (from + 1 == ring_size ? 0 : from + 1) == to;
+      if (!on_component) hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
+    }
+    if (beyond.found()) {
+      report("its hull's point " + point(beyond.where) + " lies " + number(beyond.value) +
+             " beyond the outline" + tau);
+    }
+  }
+  return violations;
+}
+
+void enforce_contract(const std::string& source, const std::vector<std::string>& violations) {
+  if (violations.empty()) return;
+  std::string message =
+      source + ": internal error: the output breaks its contract: " + violations.front();
+  if (violations.size() > 1) message += " (and " + std::to_string(violations.size() - 1) + " more)";
+  throw ContractError(message);
+}
+
+}  // namespace hullcook

@@ -1,0 +1,412 @@
+#include "hull_fitter.h"
+
+#include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+namespace hullcook {
+namespace {
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+double distance_to_ring(Vec2 p, const Ring& ring) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    best = std::min(best, point_segment_distance(p, ring[i], ring[(i + 1) % n]));
+  }
+  return best;
+}
+
+double size_of(const Ring& ring) {
+  double size = 0;
+  for (Vec2 v : ring) size = std::max({size, std::abs(v.x), std::abs(v.y)});
+  return size;
+}
+
+template <typename Visit>
+void for_each_vertex(const Region& region, Visit visit) {
+  for (Vec2 v : region.outer) visit(v);
+  for (const Ring& hole : region.holes) {
+    for (Vec2 v : hole) visit(v);
+  }
+}
+
+// Removing edge i (hull[i] -> hull[i+1]) extends its neighbouring edges until they meet, so the
+// hull only grows. Returns the meeting point, if the neighbours converge.
+std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i) {
+  std::size_t n = hull.size();
+  if (n < 4) return std::nullopt;
+  Vec2 a = hull[i], b = hull[(i + 1) % n];
+  Vec2 before = a - hull[(i + n - 1) % n];
+  Vec2 after = hull[(i + 2) % n] - b;
+  double denominator = cross(before, after);
+  if (!(denominator > 0)) return std::nullopt;
+  double t = cross(b - a, after) / denominator;
+  if (!(t >= 0) || !std::isfinite(t)) return std::nullopt;
+  return a + before * t;
+}
+
+Ring without_edge(const Ring& hull, std::size_t i, Vec2 apex) {
+  std::size_t n = hull.size();
+  Ring grown;
+  grown.reserve(n - 1);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == i) {
+      grown.push_back(apex);
+    } else if (k != (i + 1) % n) {
+      grown.push_back(hull[k]);
+    }
+  }
+  return grown;
+}
+
+}  // namespace
+
+double turn_height(const Ring& ring, std::size_t i) {
+  std::size_t n = ring.size();
+  Vec2 previous = ring[(i + n - 1) % n];
+  Vec2 next = ring[(i + 1) % n];
+  Vec2 base = next - previous;
+  double length = glm::length(base);
+  if (length == 0) return 0;
+  return cross(base, ring[i] - previous) * -1.0 / length;
+}
+
+std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& limits) {
+  std::size_t n = hull.size();
+  std::vector<bool> wanted(n, false);
+  auto want = [&](std::size_t edge) { wanted[edge % n] = true; };
+  double collinear = kCollinearFractionOfWeld * limits.weld;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (turn_height(hull, i) < collinear) {
+      want(i + n - 1);
+      want(i);
+    }
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (glm::length(hull[i] - hull[j]) < limits.weld) {
+        want(i + n - 1);
+        want(i);
+        want(j + n - 1);
+        want(j);
+      }
+    }
+  }
+  std::vector<std::size_t> edges;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (wanted[i]) edges.push_back(i);
+  }
+  return edges;
+}
+
+bool pockets_within(const Region& component, const Ring& hull, double bound) {
+  const Ring& ring = component.outer;
+  std::size_t n = ring.size();
+  if (!component.holes.empty() || n < 3 || hull.size() < 3) return false;
+  auto less = [](Vec2 p, Vec2 q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); };
+  Ring corners = hull;
+  std::sort(corners.begin(), corners.end(), less);
+  std::vector<bool> on_hull(n);
+  std::size_t first = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    on_hull[i] = std::binary_search(corners.begin(), corners.end(), ring[i], less);
+    if (on_hull[i] && first == n) first = i;
+  }
+  if (first == n) return false;
+  // The ring meets the hull's vertices in order; between two of them lies a pocket.
+  std::size_t bridge_start = first;
+  for (std::size_t step = 1; step <= n; ++step) {
+    std::size_t i = (first + step) % n;
+    if (!on_hull[i]) continue;
+    Vec2 a = ring[bridge_start], edge = ring[i] - a;
+    double length = glm::length(edge);
+    for (std::size_t k = (bridge_start + 1) % n; k != i; k = (k + 1) % n) {
+      if (!(length > 0) || std::abs(cross(edge, ring[k] - a)) / length > bound) return false;
+    }
+    bridge_start = i;
+  }
+  return true;
+}
+
+std::vector<double> allowed_depths(const Region& component, const Ring& hull, double bound) {
+  std::vector<double> allowed;
+  for_each_vertex(component,
+                  [&](Vec2 v) { allowed.push_back(std::max(bound, distance_to_ring(v, hull))); });
+  return allowed;
+}
+
+bool HullFitter::growth_within(const Ring& grown, const Ring& known) const {
+  return edges_suffice_ ? reach_.new_edges_within(grown, known, bound_)
+                        : reach_.growth_within(grown, known, bound_);
+}
+
+bool HullFitter::holds_component(const Ring& hull) const {
+  std::size_t k = 0;
+  bool ok = true;
+  // A vertex on an edge that was extended may fall outside by rounding; seal() mends that.
+  double rounding = 1e-12 * size_of(hull);
+  for_each_vertex(component_, [&](Vec2 v) {
+    if (!ok) return;
+    double depth = distance_to_ring(v, hull);
+    if (depth > allowed_[k] * (1 + 1e-12) ||
+        (depth > rounding && locate_point(hull, v) == Location::outside)) {
+      ok = false;
+    }
+    ++k;
+  });
+  return ok;
+}
+
+bool HullFitter::edges_within_depth(const Ring& hull) const {
+  // In the component's own convex hull an edge lies under one bridge, and its depth below that
+  // bridge's line is linear: no deeper than its ends.
+  const Ring& outer = component_.outer;
+  if (std::all_of(hull.begin(), hull.end(), [&](Vec2 v) {
+        return std::find(outer.begin(), outer.end(), v) != outer.end();
+      })) {
+    return true;
+  }
+  // Inside a convex hull a point's depth is its least distance to an edge's line: along a
+  // component edge, the least of linear functions, concave, so its top may lie between the ends
+  // (where the hull grew over the edge's middle). The top is at an end or where two lines cross.
+  std::size_t m = hull.size();
+  std::vector<Vec2> normals(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    Vec2 edge = hull[(k + 1) % m] - hull[k];
+    normals[k] = Vec2{-edge.y, edge.x} / glm::length(edge);
+  }
+  auto depth_of = [&](Vec2 p) {
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < m; ++k) least = std::min(least, glm::dot(normals[k], p - hull[k]));
+    return least;
+  };
+  std::vector<double> at_start(m), slope(m);
+  double rounding = 1e-12 * size_of(hull);  // an edge on the hull's boundary is at depth 0
+  std::size_t index = 0;
+  bool ok = true;
+  auto check_ring = [&](const Ring& ring) {
+    std::size_t n = ring.size(), first = index;
+    double du = n > 0 ? depth_of(ring[0]) : 0;
+    for (std::size_t i = 0; i < n && ok; ++i) {
+      Vec2 u = ring[i], w = ring[(i + 1) % n];
+      double dw = depth_of(w);
+      double limit =
+          std::max(allowed_[first + i], allowed_[first + (i + 1) % n]) * (1 + 1e-12) + rounding;
+      // Depth is 1-Lipschitz: the edge cannot reach deeper than this.
+      bool shallow = (du + dw + glm::length(w - u)) / 2 <= limit;
+      du = dw;
+      if (shallow) continue;
+      for (std::size_t k = 0; k < m; ++k) {
+        at_start[k] = glm::dot(normals[k], u - hull[k]);
+        slope[k] = glm::dot(normals[k], w - u);
+      }
+      auto depth = [&](double t) {
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < m; ++k) least = std::min(least, at_start[k] + slope[k] * t);
+        return least;
+      };
+      double deepest = std::max(depth(0), depth(1));
+      for (std::size_t k = 0; k < m; ++k) {
+        for (std::size_t l = k + 1; l < m; ++l) {
+          if (slope[k] == slope[l]) continue;
+          double t = (at_start[l] - at_start[k]) / (slope[k] - slope[l]);
+          if (t > 0 && t < 1) deepest = std::max(deepest, depth(t));
+        }
+      }
+      ok = deepest <= limit;
+    }
+    index += n;
+  };
+  check_ring(component_.outer);
+  for (const Ring& hole : component_.holes) check_ring(hole);
+  return ok;
+}
+
+std::optional<Ring> HullFitter::seal(Ring hull) const {
+  std::size_t n = hull.size();
+  double size = size_of(hull);
+  // An edge a vertex is outside of is moved outward parallel to itself: its ends slide along
+  // their other edges, whose lines (proven within bound) stay where they were.
+  for (double shift = 0x1p-52 * size; shift <= 0x1p-30 * size; shift *= 2) {
+    std::vector<bool> push(n, false);
+    bool outside = false;
+    for_each_vertex(component_, [&](Vec2 v) {
+      if (locate_point(hull, v) != Location::outside) return;
+      outside = true;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (orientation(hull[i], hull[(i + 1) % n], v) < 0) push[i] = true;
+      }
+    });
+    if (!outside) return hull;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!push[i]) continue;
+      Vec2 before = hull[(i + n - 1) % n], &from = hull[i], &to = hull[(i + 1) % n];
+      Vec2 after = hull[(i + 2) % n];
+      Vec2 edge = to - from;
+      Vec2 outward = Vec2{edge.y, -edge.x} / glm::length(edge);
+      double in_from = glm::dot(from - before, outward), in_to = glm::dot(to - after, outward);
+      if (!(in_from > 0) || !(in_to > 0)) return std::nullopt;
+      from += (from - before) * (shift / in_from);
+      to += (to - after) * (shift / in_to);
+    }
+  }
+  return std::nullopt;
+}
+
+bool HullFitter::too_small(const Ring& hull) const {
+  return hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * limits_.weld * limits_.weld;
+}
+
+std::optional<Ring> HullFitter::fit(Ring hull) {
+  const Ring given = hull;
+  // Reducing the vertex count creates new apexes, which may need welding again.
+  for (int round = 0; round < 4; ++round) {
+    std::optional<Ring> mended = mend_local_violations(std::move(hull));
+    if (!mended) return std::nullopt;
+    hull = std::move(*mended);
+    if (limits_.max_verts == 0 || hull.size() <= limits_.max_verts) {
+      // The hull given holds the component exactly (a convex hull of its vertices and more).
+      if (hull == given) {
+        if (!hull_meets_limits(hull, limits_) || !edges_within_depth(hull)) return std::nullopt;
+        return hull;
+      }
+      std::optional<Ring> sealed = seal(std::move(hull));
+      if (!sealed || !hull_meets_limits(*sealed, limits_) || !edges_within_depth(*sealed)) {
+        return std::nullopt;
+      }
+      return sealed;
+    }
+    std::optional<Ring> reduced = reduce_vertex_count(hull);
+    if (!reduced) return std::nullopt;
+    hull = std::move(*reduced);
+  }
+  return std::nullopt;
+}
+
+// Removes, one at a time, the cheapest edge that mends a weld or collinearity violation.
+std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
+  while (true) {
+    if (too_small(hull)) return std::nullopt;
+    std::vector<std::size_t> edges = edges_to_mend(hull, limits_);
+    if (edges.empty()) return hull;
+    struct Candidate {
+      double error;
+      std::size_t edge;
+      Vec2 apex;
+    };
+    std::vector<Candidate> candidates;
+    for (std::size_t edge : edges) {
+      std::optional<Vec2> apex = removed_edge_apex(hull, edge);
+      if (!apex) continue;
+      double error = reach_.distance(*apex, bound_);
+      if (error <= bound_) candidates.push_back({error, edge, *apex});
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+      return std::tie(a.error, a.edge) < std::tie(b.error, b.edge);
+    });
+    bool grown = false;
+    for (const Candidate& candidate : candidates) {
+      Ring next = without_edge(hull, candidate.edge, candidate.apex);
+      if (holds_component(next) && growth_within(next, hull)) {
+        hull = std::move(next);
+        grown = true;
+        break;
+      }
+    }
+    if (!grown) return std::nullopt;
+  }
+}
+
+// Keeps as few of the hull's edge lines as possible (at most max_verts) so that the polygon
+// they bound stays within bound of the outline. From every starting edge, each kept line is
+// followed by the farthest line whose meeting point with it is still within bound: greedy
+// farthest reach is optimal along a chain, and trying every start closes the cycle. The
+// polygons are then proven (area and component depths) smallest first.
+std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
+  std::size_t m = hull.size();
+  apex_cache_.assign(m * m, ApexState::unknown);
+  corner_reach_.resize(m);
+  for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
+  apex_points_.assign(m * m, Vec2{0, 0});
+  std::vector<std::vector<std::size_t>> closed;
+  for (std::size_t start = 0; start < m; ++start) {
+    std::vector<std::size_t> kept{start};
+    std::size_t current = start;
+    bool is_closed = false;
+    while (kept.size() <= limits_.max_verts) {
+      std::size_t farthest = current + 1;
+      for (std::size_t j = current + 2; j <= start + m; ++j) {
+        if (!apex_within(hull, current % m, j % m)) break;
+        farthest = j;
+      }
+      if (farthest == start + m) {
+        is_closed = true;
+        break;
+      }
+      kept.push_back(farthest);
+      current = farthest;
+    }
+    if (!is_closed || kept.size() > limits_.max_verts || kept.size() < 3) continue;
+    for (std::size_t& k : kept) k %= m;
+    closed.push_back(std::move(kept));
+  }
+  // The same polygon comes from several starts; try each once, fewest vertices first.
+  for (std::vector<std::size_t>& kept : closed)
+    std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
+  std::stable_sort(closed.begin(), closed.end(),
+                   [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::vector<std::vector<std::size_t>> tried;
+  for (const std::vector<std::size_t>& kept : closed) {
+    if (std::find(tried.begin(), tried.end(), kept) != tried.end()) continue;
+    tried.push_back(kept);
+    Ring polygon;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      std::size_t i = kept[k], j = kept[(k + 1) % kept.size()];
+      polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
+    }
+    // The new edges are the stretches apex_within checked.
+    if (holds_component(polygon) && (edges_suffice_ || growth_within(polygon, hull))) {
+      return polygon;
+    }
+  }
+  return std::nullopt;
+}
+
+// Whether the lines of edges i and j (j after i, counter-clockwise, not adjacent) meet at a
+// point within bound of the outline, and the stretches of those lines that would become new
+// edges stay within bound.
+bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
+  std::size_t m = hull.size();
+  ApexState& state = apex_cache_[i * m + j];
+  if (state == ApexState::unknown) {
+    state = ApexState::beyond;
+    Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
+    Vec2 first = b - a, second = d - c;
+    double denominator = cross(first, second);
+    if (denominator > 0) {
+      double t = cross(c - a, second) / denominator;
+      Vec2 apex = a + first * t;
+      bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t);
+      double at_apex = ahead ? reach_.distance(apex, bound_) : bound_ + 1;
+      // Distance is 1-Lipschitz: a segment whose ends' distances and half its length stay within
+      // bound needs no closer look.
+      auto within = [&](Vec2 corner, double at_corner) {
+        return (at_corner + at_apex + glm::length(apex - corner)) / 2 <= bound_ ||
+               reach_.segment_within(corner, apex, bound_);
+      };
+      if (at_apex <= bound_ && within(b, corner_reach_[(i + 1) % m]) &&
+          within(c, corner_reach_[j])) {
+        state = ApexState::within;
+        apex_points_[i * m + j] = apex;
+      }
+    }
+  }
+  return state == ApexState::within;
+}
+
+}  // namespace hullcook

@@ -1,0 +1,88 @@
+// Growing one hull until the engine accepts it, keeping it within τ.
+#pragma once
+
+#include "outline_distance.h"
+
+#include "hullcook/cook/constrain.h"
+
+#include <optional>
+#include <vector>
+
+namespace hullcook {
+
+// Height of vertex i above the line through its neighbours; negative for a reflex turn.
+double turn_height(const Ring& ring, std::size_t i);
+
+// Edges whose removal may mend a local violation of the limits (two vertices closer than the
+// weld distance, or a vertex nearly collinear with its neighbours), without duplicates.
+std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& limits);
+
+// For each vertex of component (the outer ring, then each hole), how far it may lie from the
+// boundary of a hull grown from hull: bound, or its distance from hull's boundary if more (a
+// growing hull never brings a vertex closer to tau than it was).
+std::vector<double> allowed_depths(const Region& component, const Ring& hull, double bound);
+
+// True when every point of hull (the convex hull of component's outer ring) is within bound of
+// component, shown by its pockets: component has no hole, and each vertex lies within bound of
+// the line of the hull edge over it (a point of a pocket, moving away from that line, meets the
+// pocket's chain no deeper than that). Then the far side of component's bound has no bounded
+// part, so a polygon holding hull whose boundary is within bound of component is wholly so.
+bool pockets_within(const Region& component, const Ring& hull, double bound);
+
+class HullFitter {
+ public:
+  // reach: the distances hull points are bounded in (to the component itself, or to the whole
+  // outline); bound: how far [output units] a hull point may lie; edges_suffice: whether the new
+  // edges alone prove new area within bound (see pockets_within), else cells prove it too;
+  // allowed: as from allowed_depths. The references must outlive the fitter.
+  HullFitter(const Region& component, const std::vector<double>& allowed,
+             const OutlineDistance& reach, bool edges_suffice, double bound,
+             const EngineLimits& limits)
+      : component_(component),
+        allowed_(allowed),
+        reach_(reach),
+        edges_suffice_(edges_suffice),
+        bound_(bound),
+        limits_(limits) {}
+
+  // Grows hull (convex, counter-clockwise, holding the component's vertices exactly as a convex
+  // hull of them does, within bound: it is not checked again) until it meets the limits, keeping
+  // every point it adds within bound and every point of the component within its allowed depth;
+  // nullopt when no such growth is found.
+  std::optional<Ring> fit(Ring hull);
+
+  // True when every point grown adds to known (convex, inside it) is within bound.
+  bool growth_within(const Ring& grown, const Ring& known) const;
+
+  // True when every component vertex lies in hull (or on its boundary, or outside it by
+  // rounding) no deeper than allowed.
+  bool holds_component(const Ring& hull) const;
+
+  // True when every point of every component edge lies no deeper in hull (convex, holding the
+  // component) than the deeper of its ends may.
+  bool edges_within_depth(const Ring& hull) const;
+
+  // hull with the edges rounding left a component vertex outside of moved out by a few units in
+  // the last place; nullopt if that is not enough.
+  std::optional<Ring> seal(Ring hull) const;
+
+ private:
+  bool too_small(const Ring& hull) const;
+  std::optional<Ring> mend_local_violations(Ring hull) const;
+  std::optional<Ring> reduce_vertex_count(const Ring& hull);
+  bool apex_within(const Ring& hull, std::size_t i, std::size_t j);
+
+  enum class ApexState : unsigned char { unknown, within, beyond };
+
+  const Region& component_;
+  const std::vector<double>& allowed_;
+  const OutlineDistance& reach_;
+  bool edges_suffice_;
+  double bound_;
+  EngineLimits limits_;
+  std::vector<ApexState> apex_cache_;
+  std::vector<Vec2> apex_points_;
+  std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
+};
+
+}  // namespace hullcook

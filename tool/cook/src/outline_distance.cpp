@@ -1,0 +1,456 @@
+#include "outline_distance.h"
+
+#include "hullcook/core/geometry.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+namespace hullcook {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The grid has about one cell per edge, but never more than this many cells a side.
+constexpr int kMaxCellsPerSide = 2048;
+// growth_within refuses a polygon whose proof needs more cells than this.
+constexpr int kCellBudget = 1 << 14;
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+struct Interval {
+  double low = kInfinity, high = -kInfinity;
+  bool empty() const { return !(low <= high); }
+  void join(Interval other) {
+    if (other.empty()) return;
+    low = std::min(low, other.low);
+    high = std::max(high, other.high);
+  }
+};
+
+// {t : lower <= offset + slope * t <= upper}.
+Interval linear_interval(double offset, double slope, double lower, double upper) {
+  if (slope == 0) {
+    return offset >= lower && offset <= upper ? Interval{-kInfinity, kInfinity} : Interval{};
+  }
+  double first = (lower - offset) / slope, second = (upper - offset) / slope;
+  return {std::min(first, second), std::max(first, second)};
+}
+
+Interval intersect(Interval a, Interval b) {
+  return {std::max(a.low, b.low), std::min(a.high, b.high)};
+}
+
+// {t : |p + t v - centre| <= radius}.
+Interval disc_interval(Vec2 p, Vec2 v, Vec2 centre, double radius) {
+  Vec2 offset = p - centre;
+  double a = glm::dot(v, v), b = glm::dot(v, offset),
+         c = glm::dot(offset, offset) - radius * radius;
+  if (a == 0) return c <= 0 ? Interval{-kInfinity, kInfinity} : Interval{};
+  double discriminant = b * b - a * c;
+  if (discriminant < 0) return {};
+  double root = std::sqrt(discriminant);
+  return {(-b - root) / a, (-b + root) / a};
+}
+
+// {t : the distance from p + t v to segment ab is at most radius}: the line meets the capsule
+// (two discs and the band between them) in one interval, the union of the three.
+Interval capsule_interval(Vec2 p, Vec2 v, Vec2 a, Vec2 b, double radius) {
+  Interval covered = disc_interval(p, v, a, radius);
+  covered.join(disc_interval(p, v, b, radius));
+  Vec2 along = b - a;
+  double length = glm::length(along);
+  if (length > 0) {
+    Vec2 offset = p - a;
+    Interval band =
+        linear_interval(glm::dot(offset, along), glm::dot(v, along), 0, length * length);
+    band = intersect(band, linear_interval(cross(along, offset) / length, cross(along, v) / length,
+                                           -radius, radius));
+    covered.join(band);
+  }
+  return covered;
+}
+
+// The parameters of segment p + t v (t in [0, 1]) inside the convex counter-clockwise ring.
+Interval clip_to_convex(Vec2 p, Vec2 v, const Ring& convex) {
+  if (convex.size() < 3) return {};
+  Interval inside{0, 1};
+  for (std::size_t i = 0, n = convex.size(); i < n && !inside.empty(); ++i) {
+    Vec2 edge = convex[(i + 1) % n] - convex[i];
+    // Left of the edge: cross(edge, p + t v - convex[i]) >= 0.
+    inside = intersect(inside,
+                       linear_interval(cross(edge, p - convex[i]), cross(edge, v), 0, kInfinity));
+  }
+  return inside;
+}
+
+bool inside_convex(const Ring& convex, Vec2 p) {
+  if (convex.size() < 3) return false;
+  for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
+    if (cross(convex[(i + 1) % n] - convex[i], p - convex[i]) < 0) return false;
+  }
+  return true;
+}
+
+// False when an edge of the convex ring has the whole square strictly on its outer side (the
+// square is then disjoint from the ring; the converse may be wrong near corners, which only
+// costs more cells).
+bool square_meets_convex(const Ring& convex, Vec2 centre, double half) {
+  for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
+    Vec2 edge = convex[(i + 1) % n] - convex[i];
+    bool all_outside = true;
+    for (Vec2 corner : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}}) {
+      if (cross(edge, centre + corner * half - convex[i]) >= 0) all_outside = false;
+    }
+    if (all_outside) return false;
+  }
+  return true;
+}
+
+bool square_inside_convex(const Ring& convex, Vec2 centre, double half) {
+  for (Vec2 corner : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}}) {
+    if (!inside_convex(convex, centre + corner * half)) return false;
+  }
+  return true;
+}
+
+// The part of the convex ring on the outer (right) side of the line through a along edge.
+Ring clip_outside(const Ring& ring, Vec2 a, Vec2 edge) {
+  Ring out;
+  auto side = [&](Vec2 p) { return -cross(edge, p - a); };  // > 0: outside
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    Vec2 p = ring[i], q = ring[(i + 1) % n];
+    double sp = side(p), sq = side(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+  }
+  return out;
+}
+
+// True when segment ab meets the closed axis-aligned square (Liang-Barsky).
+bool segment_meets_square(Vec2 a, Vec2 b, Vec2 centre, double half) {
+  Vec2 v = b - a;
+  Interval t{0, 1};
+  t = intersect(t, linear_interval(a.x - centre.x, v.x, -half, half));
+  t = intersect(t, linear_interval(a.y - centre.y, v.y, -half, half));
+  return !t.empty();
+}
+
+}  // namespace
+
+OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
+  auto add_ring = [&](const Ring& ring, auto add) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      if (ring[i] != ring[(i + 1) % n]) add(ring[i], ring[(i + 1) % n]);
+    }
+  };
+  auto add_region = [&](const Region& region, auto add) {
+    add_ring(region.outer, add);
+    for (const Ring& hole : region.holes) add_ring(hole, add);
+  };
+  if (components.size() == 1) {
+    add_region(*components[0], [&](Vec2 a, Vec2 b) { edges_.push_back({a, b}); });
+  } else {
+    // A cut is an edge of two components in opposite directions: sort the edges by their
+    // undirected key and keep, of each, the surplus of one direction over the other.
+    struct Directed {
+      Vec2 low, high;
+      bool forward;
+    };
+    std::vector<Directed> directed;
+    for (const Region* component : components) {
+      add_region(*component, [&](Vec2 a, Vec2 b) {
+        bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
+        directed.push_back({forward ? a : b, forward ? b : a, forward});
+      });
+    }
+    auto key = [](const Directed& e) { return std::tie(e.low.x, e.low.y, e.high.x, e.high.y); };
+    std::sort(directed.begin(), directed.end(), [&](const Directed& a, const Directed& b) {
+      return key(a) != key(b) ? key(a) < key(b) : a.forward < b.forward;
+    });
+    for (std::size_t i = 0; i < directed.size();) {
+      std::size_t j = i;
+      int surplus = 0;
+      for (; j < directed.size() && key(directed[j]) == key(directed[i]); ++j) {
+        surplus += directed[j].forward ? 1 : -1;
+      }
+      for (int k = 0; k < std::abs(surplus); ++k) {
+        const Directed& e = directed[i];
+        edges_.push_back(surplus > 0 ? Edge{e.low, e.high} : Edge{e.high, e.low});
+      }
+      i = j;
+    }
+  }
+  if (edges_.empty()) return;
+
+  Vec2 low{kInfinity, kInfinity}, high{-kInfinity, -kInfinity};
+  for (const Edge& e : edges_) {
+    low = glm::min(low, glm::min(e.a, e.b));
+    high = glm::max(high, glm::max(e.a, e.b));
+  }
+  Vec2 size = high - low;
+  double extent = std::max(size.x, size.y);
+  if (!(extent > 0)) extent = 1;
+  double edges = static_cast<double>(edges_.size());
+  cell_ = std::max({std::sqrt(size.x * size.y / edges), extent / kMaxCellsPerSide,
+                    std::numeric_limits<double>::min()});
+  origin_ = low;
+  columns_ = std::min(kMaxCellsPerSide, static_cast<int>(size.x / cell_) + 1);
+  rows_ = std::min(kMaxCellsPerSide, static_cast<int>(size.y / cell_) + 1);
+
+  // Counted first, then filled: the edges of each cell and row in edge order.
+  cell_start_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
+  row_start_.assign(static_cast<std::size_t>(rows_) + 1, 0);
+  auto for_each_place = [&](auto in_cell, auto in_row) {
+    for (std::uint32_t k = 0; k < edges_.size(); ++k) {
+      const Edge& e = edges_[k];
+      for_each_cell_near(e.a, e.b, 0.0, [&](int column, int row) {
+        in_cell(static_cast<std::size_t>(row) * columns_ + column, k);
+      });
+      for (int row = row_of(std::min(e.a.y, e.b.y)), last = row_of(std::max(e.a.y, e.b.y));
+           row <= last; ++row) {
+        in_row(static_cast<std::size_t>(row), k);
+      }
+    }
+  };
+  for_each_place([&](std::size_t cell, std::uint32_t) { ++cell_start_[cell + 1]; },
+                 [&](std::size_t row, std::uint32_t) { ++row_start_[row + 1]; });
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
+  cell_edges_.resize(cell_start_.back());
+  row_edges_.resize(row_start_.back());
+  std::vector<std::uint32_t> cell_fill(cell_start_.begin(), cell_start_.end() - 1);
+  std::vector<std::uint32_t> row_fill(row_start_.begin(), row_start_.end() - 1);
+  for_each_place([&](std::size_t cell, std::uint32_t k) { cell_edges_[cell_fill[cell]++] = k; },
+                 [&](std::size_t row, std::uint32_t k) { row_edges_[row_fill[row]++] = k; });
+  visited_.assign(edges_.size(), 0);
+}
+
+int OutlineDistance::column_of(double x) const {
+  double column = std::floor((x - origin_.x) / cell_);
+  return static_cast<int>(std::clamp(column, 0.0, static_cast<double>(columns_ - 1)));
+}
+
+int OutlineDistance::row_of(double y) const {
+  double row = std::floor((y - origin_.y) / cell_);
+  return static_cast<int>(std::clamp(row, 0.0, static_cast<double>(rows_ - 1)));
+}
+
+template <typename Visit>
+void OutlineDistance::for_each_cell_near(Vec2 a, Vec2 b, double radius, Visit visit) const {
+  double low_y = std::min(a.y, b.y) - radius, high_y = std::max(a.y, b.y) + radius;
+  double top = origin_.y + rows_ * cell_, right = origin_.x + columns_ * cell_;
+  if (high_y < origin_.y || low_y > top) return;
+  if (std::max(a.x, b.x) + radius < origin_.x || std::min(a.x, b.x) - radius > right) return;
+  // Cells are taken a little wide: rounding must not lose a cell the segment touches.
+  double pad = radius + 1e-9 * cell_;
+  for (int row = row_of(low_y), last = row_of(high_y); row <= last; ++row) {
+    // The part of the segment whose y is within radius of this row's band.
+    double band_low = std::max(origin_.y + row * cell_ - radius, std::min(a.y, b.y));
+    double band_high = std::min(origin_.y + (row + 1) * cell_ + radius, std::max(a.y, b.y));
+    if (row == 0) band_low = std::min(a.y, b.y);
+    if (row == rows_ - 1) band_high = std::max(a.y, b.y);
+    double low_x = std::min(a.x, b.x), high_x = std::max(a.x, b.x);
+    if (a.y != b.y && band_low <= band_high) {
+      double x0 = a.x + (band_low - a.y) * (b.x - a.x) / (b.y - a.y);
+      double x1 = a.x + (band_high - a.y) * (b.x - a.x) / (b.y - a.y);
+      low_x = std::max(low_x, std::min(x0, x1));
+      high_x = std::min(high_x, std::max(x0, x1));
+    }
+    for (int column = column_of(low_x - pad), end = column_of(high_x + pad); column <= end;
+         ++column) {
+      visit(column, row);
+    }
+  }
+}
+
+template <typename Visit>
+void OutlineDistance::for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit visit) const {
+  if (++query_ == 0) {
+    std::fill(visited_.begin(), visited_.end(), 0);
+    query_ = 1;
+  }
+  for_each_cell_near(a, b, radius, [&](int column, int row) {
+    std::size_t cell = static_cast<std::size_t>(row) * columns_ + column;
+    for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
+      std::uint32_t edge = cell_edges_[i];
+      if (visited_[edge] == query_) continue;
+      visited_[edge] = query_;
+      visit(edge);
+    }
+  });
+}
+
+bool OutlineDistance::contains(Vec2 p) const {
+  if (edges_.empty() || p.y < origin_.y || p.y > origin_.y + rows_ * cell_) return false;
+  int row = row_of(p.y);
+  bool inside = false;
+  for (std::uint32_t i = row_start_[row]; i < row_start_[row + 1]; ++i) {
+    const Edge& e = edges_[row_edges_[i]];
+    if ((e.a.y > p.y) != (e.b.y > p.y) &&
+        p.x < e.a.x + (p.y - e.a.y) * (e.b.x - e.a.x) / (e.b.y - e.a.y)) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double OutlineDistance::distance(Vec2 p, double limit) const {
+  if (edges_.empty()) return kInfinity;
+  if (contains(p)) return 0.0;
+  // Cells further than k rings from p's cell (p clamped into the grid, which only brings it
+  // closer to every cell) are at least k cells away.
+  Vec2 grid_end = origin_ + Vec2{columns_, rows_} * cell_;
+  double outside = glm::length(p - glm::clamp(p, origin_, grid_end));
+  if (outside > limit) return outside;
+  int column = column_of(p.x), row = row_of(p.y);
+  int rings = std::max(columns_, rows_);
+  double best = kInfinity;
+  for (int k = 0; k <= rings; ++k) {
+    auto scan = [&](int c, int r) {
+      if (c < 0 || r < 0 || c >= columns_ || r >= rows_) return;
+      std::size_t cell = static_cast<std::size_t>(r) * columns_ + c;
+      for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
+        const Edge& e = edges_[cell_edges_[i]];
+        best = std::min(best, point_segment_distance(p, e.a, e.b));
+      }
+    };
+    if (k == 0) {
+      scan(column, row);
+    } else {
+      for (int c = column - k; c <= column + k; ++c) {
+        scan(c, row - k);
+        scan(c, row + k);
+      }
+      for (int r = row - k + 1; r <= row + k - 1; ++r) {
+        scan(column - k, r);
+        scan(column + k, r);
+      }
+    }
+    double unseen = std::max(outside, k * cell_);
+    if (best <= unseen || unseen > limit) break;
+  }
+  return best;
+}
+
+bool OutlineDistance::segment_within(Vec2 a, Vec2 b, double tau) const {
+  if (edges_.empty()) return false;
+  Vec2 v = b - a;
+  std::vector<std::pair<double, double>>& covered = covered_;
+  covered.clear();
+  for_each_edge_near(a, b, tau, [&](std::uint32_t k) {
+    Interval interval = intersect(capsule_interval(a, v, edges_[k].a, edges_[k].b, tau), {0, 1});
+    if (!interval.empty()) covered.emplace_back(interval.low, interval.high);
+  });
+  std::sort(covered.begin(), covered.end());
+  // What no capsule covers is further than tau from the boundary: each gap lies wholly inside
+  // or wholly outside the outline.
+  double reach = 0;
+  bool first = true;
+  auto gap_inside = [&](double from, double to) { return contains(a + v * (0.5 * (from + to))); };
+  for (const auto& [low, high] : covered) {
+    if (first ? low > 0 : low > reach) {
+      if (!gap_inside(first ? 0.0 : reach, low)) return false;
+    }
+    reach = first ? high : std::max(reach, high);
+    first = false;
+  }
+  if (first) return gap_inside(0, 1);
+  return reach >= 1 || gap_inside(reach, 1);
+}
+
+bool OutlineDistance::square_inside(Vec2 centre, double half) const {
+  if (!contains(centre)) return false;
+  bool crossed = false;
+  double wide = half * (1 + 1e-9);
+  for_each_edge_near(centre - Vec2{half, 0}, centre + Vec2{half, 0}, half, [&](std::uint32_t k) {
+    if (!crossed && segment_meets_square(edges_[k].a, edges_[k].b, centre, wide)) crossed = true;
+  });
+  return !crossed;
+}
+
+bool OutlineDistance::new_edges_within(const Ring& grown, const Ring& known, double tau) const {
+  std::size_t n = grown.size();
+  if (n == 0) return true;
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec2 a = grown[i], b = grown[(i + 1) % n], v = b - a;
+    Interval old = clip_to_convex(a, v, known);
+    if (old.empty() || old.high - old.low < 1e-9) {
+      if (!segment_within(a, b, tau)) return false;
+      continue;
+    }
+    // The part inside known is not checked again; the new parts are taken a little long, so
+    // that rounding never skips a new point.
+    if (old.low > 1e-12 && !segment_within(a, a + v * std::min(old.low + 1e-9, 1.0), tau)) {
+      return false;
+    }
+    if (old.high < 1 - 1e-12 && !segment_within(a + v * std::max(old.high - 1e-9, 0.0), b, tau)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool OutlineDistance::growth_within(const Ring& grown, const Ring& known, double tau) const {
+  if (!new_edges_within(grown, known, tau)) return false;
+  // Only beyond known's edges is the area new: grown on the outer side of each edge's line.
+  int budget = kCellBudget;
+  if (known.size() < 3) return cells_within(grown, known, tau, budget);
+  double scale = 0;
+  for (Vec2 p : grown)
+    scale = std::max({scale, std::abs(p.x - grown[0].x), std::abs(p.y - grown[0].y)});
+  for (std::size_t i = 0, m = known.size(); i < m; ++i) {
+    Vec2 a = known[i], edge = known[(i + 1) % m] - a;
+    double length = glm::length(edge);
+    if (length == 0) continue;
+    double beyond = 0;
+    for (Vec2 p : grown) beyond = std::max(beyond, -cross(edge, p - a) / length);
+    if (beyond <= 1e-12 * scale) continue;
+    if (!cells_within(clip_outside(grown, a, edge), known, tau, budget)) return false;
+  }
+  return true;
+}
+
+bool OutlineDistance::cells_within(const Ring& region, const Ring& known, double tau,
+                                   int& budget) const {
+  if (region.size() < 3) return true;
+  Vec2 low = region[0], high = region[0];
+  for (Vec2 p : region) low = glm::min(low, p), high = glm::max(high, p);
+  double extent = std::max(high.x - low.x, high.y - low.y);
+  if (!(extent > 0)) return true;
+  double smallest = 1e-10 * (tau > 0 ? tau : extent);
+  struct Cell {
+    Vec2 centre;
+    double half;
+  };
+  std::vector<Cell> cells{{0.5 * (low + high), 0.5 * extent}};
+  while (!cells.empty()) {
+    Cell cell = cells.back();
+    cells.pop_back();
+    if (!square_meets_convex(region, cell.centre, cell.half)) continue;
+    if (square_inside_convex(known, cell.centre, cell.half)) continue;
+    double radius = cell.half * std::sqrt(2.0);
+    double d = distance(cell.centre, tau + radius);
+    if (d + radius <= tau) continue;
+    if (d == 0 && square_inside(cell.centre, cell.half)) continue;
+    if (d > tau && inside_convex(region, cell.centre) && !inside_convex(known, cell.centre)) {
+      return false;
+    }
+    if (cell.half <= smallest) {
+      if (d <= tau + radius) continue;
+      return false;
+    }
+    if (--budget == 0) return false;
+    double quarter = 0.5 * cell.half;
+    for (Vec2 corner : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}}) {
+      cells.push_back({cell.centre + corner * quarter, quarter});
+    }
+  }
+  return true;
+}
+
+}  // namespace hullcook

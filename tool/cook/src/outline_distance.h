@@ -1,0 +1,76 @@
+// Distances to an asset's outline for the engine limits: a hull may reach anywhere within τ of
+// the outline (the union of the pieces' components), and these queries prove it rather than
+// sample it.
+#pragma once
+
+#include "hullcook/core/polygon.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace hullcook {
+
+class OutlineDistance {
+ public:
+  // The union of components that partition an outline. An edge two components share (in
+  // opposite directions: a cut) lies inside the outline and is left out.
+  explicit OutlineDistance(const std::vector<const Region*>& components);
+
+  // True when p is inside the outline. Near the boundary (within rounding) either answer may
+  // come back; every caller also measures the distance to the boundary.
+  bool contains(Vec2 p) const;
+
+  // Distance from p to the outline: 0 inside. Beyond limit, some value above limit (the search
+  // stops there).
+  double distance(Vec2 p, double limit) const;
+
+  // True when every point of segment ab is within tau of the outline: the points within tau of
+  // each boundary edge form one interval of the segment (a capsule is convex), and what the
+  // intervals leave uncovered must be inside the outline.
+  bool segment_within(Vec2 a, Vec2 b, double tau) const;
+
+  // True when every point of the boundary of the convex polygon grown that is not in the convex
+  // polygon known (known inside grown; empty for none) is within tau of the outline.
+  bool new_edges_within(const Ring& grown, const Ring& known, double tau) const;
+
+  // new_edges_within, and every point of grown's area outside known within tau as well, proven
+  // by cells: each by the distance at its centre plus its radius (distance is 1-Lipschitz). A
+  // hull whose edges pass may still enclose a hole of the outline, or grow past a deep pocket.
+  // Cells of about 1e-10 tau are taken when their centre is within tau plus their radius; a
+  // polygon that needs more than a few thousand cells is refused.
+  bool growth_within(const Ring& grown, const Ring& known, double tau) const;
+
+ private:
+  struct Edge {
+    Vec2 a, b;
+  };
+
+  int column_of(double x) const;
+  int row_of(double y) const;
+  // Calls visit(column, row) for each cell that may hold a point within radius of segment ab.
+  template <typename Visit>
+  void for_each_cell_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
+  // Calls visit(edge index) once for each edge registered in a cell that may lie within radius
+  // of segment ab.
+  template <typename Visit>
+  void for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
+  // growth_within's proof by cells of the convex region, less known.
+  bool cells_within(const Ring& region, const Ring& known, double tau, int& budget) const;
+  // True when no boundary edge meets the square and its centre is inside the outline.
+  bool square_inside(Vec2 centre, double half) const;
+
+  std::vector<Edge> edges_;
+  Vec2 origin_{0, 0};  // the grid's lower corner
+  double cell_ = 1;
+  int columns_ = 0, rows_ = 0;
+  // Edges by cell and by row of cells (for the ray crossing test), compressed: the edges of
+  // cell c are cell_edges_[cell_start_[c] .. cell_start_[c + 1]).
+  std::vector<std::uint32_t> cell_start_, cell_edges_;
+  std::vector<std::uint32_t> row_start_, row_edges_;
+  mutable std::vector<std::uint32_t> visited_;              // per edge: the query that last saw it
+  mutable std::vector<std::pair<double, double>> covered_;  // segment_within's intervals
+  mutable std::uint32_t query_ = 0;
+};
+
+}  // namespace hullcook

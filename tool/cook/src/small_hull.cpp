@@ -1,0 +1,74 @@
+#include "small_hull.h"
+
+#include "hullcook/core/geometry.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hullcook {
+namespace {
+
+// Candidates are made this much wider than the weld, so that rounding keeps them welded.
+constexpr double kWeldMargin = 1 + 1e-6;
+
+double area_of(const Ring& ring) { return std::abs(signed_area(ring)); }
+
+}  // namespace
+
+std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
+  if (ring.empty()) return {};
+  // Coordinates relative to a vertex keep a tiny piece's precision far from the origin.
+  const Vec2 origin = ring.front();
+  Ring local;
+  local.reserve(ring.size());
+  for (Vec2 p : ring) local.push_back(p - origin);
+  Ring hull = convex_hull(local);
+
+  std::vector<Vec2> directions{{1, 0}};
+  for (std::size_t i = 0, n = hull.size(); n >= 2 && i < n; ++i) {
+    Vec2 edge = hull[(i + 1) % n] - hull[i];
+    double length = glm::length(edge);
+    if (length > 0) directions.push_back(edge / length);
+  }
+  double extent = 0;
+  for (Vec2 p : local) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  double size = limits.weld > 0 ? limits.weld * kWeldMargin
+                                : std::max(1e-9 * extent, std::numeric_limits<double>::min());
+
+  std::vector<Ring> candidates;
+  for (Vec2 u : directions) {
+    Vec2 v{-u.y, u.x};
+    double u0 = std::numeric_limits<double>::infinity(), u1 = -u0, v0 = u0, v1 = -u0;
+    for (Vec2 p : local) {
+      u0 = std::min(u0, glm::dot(p, u)), u1 = std::max(u1, glm::dot(p, u));
+      v0 = std::min(v0, glm::dot(p, v)), v1 = std::max(v1, glm::dot(p, v));
+    }
+    auto at = [&](double a, double b) { return origin + u * a + v * b; };
+    // Rectangles at least the weld distance a side: centred on the ring, or flush with either
+    // side of it (the one that stays inside the outline, where the other would stick out).
+    double width = std::max(u1 - u0, size), height = std::max(v1 - v0, size);
+    for (double a : {0.5 * (u0 + u1 - width), u0, u1 - width}) {
+      for (double b : {0.5 * (v0 + v1 - height), v0, v1 - height}) {
+        candidates.push_back(
+            {at(a, b), at(a + width, b), at(a + width, b + height), at(a, b + height)});
+      }
+    }
+    // Triangles on either side: a base twice the ring's length (at least the weld) and twice
+    // its thickness high hold the ring; a tenth of the weld high keeps the turns strict.
+    double half_base = std::max(u1 - u0, size);
+    double rise = std::max(2 * (v1 - v0), 1.5 * kCollinearFractionOfWeld * size);
+    double middle = 0.5 * (u0 + u1);
+    candidates.push_back(
+        {at(middle - half_base, v0), at(middle + half_base, v0), at(middle, v0 + rise)});
+    candidates.push_back(
+        {at(middle + half_base, v1), at(middle - half_base, v1), at(middle, v1 - rise)});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Ring& a, const Ring& b) { return area_of(a) < area_of(b); });
+  return candidates;
+}
+
+}  // namespace hullcook
