@@ -155,6 +155,24 @@ TEST(Cook, OutputDoesNotDependOnThreadCount) {
   EXPECT_EQ(debug_json(without_timings(first.assets)), debug_json(without_timings(second.assets)));
 }
 
+// One sheet alone is split by region among the threads: the output is the same.
+TEST(Cook, OneSheetDoesNotDependOnThreadCount) {
+  Settings one;
+  one.threads = 1;
+  one.tau = Tolerance{1, false};
+  one.pixels_per_unit = 100;  // small pieces, some too small for the weld: merged or grown
+  Settings three = one;
+  three.threads = 3;
+  const std::vector<std::filesystem::path> inputs{kSprites / "teeworlds__mapres__grass_main.png"};
+  CookResult first = cook(inputs, one), second = cook(inputs, three);
+  ASSERT_EQ(first.assets.size(), 1u);
+  EXPECT_GT(first.assets[0].regions.size(), 1u);
+  EXPECT_GT(first.assets[0].pieces.size(), 100u);
+  EXPECT_EQ(write_bundle(first.assets), write_bundle(second.assets));
+  EXPECT_EQ(debug_json(without_timings(first.assets)), debug_json(without_timings(second.assets)));
+  EXPECT_EQ(first.assets[0].warnings, second.assets[0].warnings);
+}
+
 TEST(Cook, LevelsOfDetailAreOrderedFinestFirstAndCoarserHaveFewerHulls) {
   Settings settings;
   settings.tau = Tolerance{0.5, false};

@@ -11,6 +11,7 @@
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
 
+#include <malloc.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -115,14 +117,45 @@ std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces) {
   return cooked;
 }
 
+// Runs work(i) for every i below count on up to `threads` threads (the caller's included). Each
+// result goes to its own slot, so nothing depends on the thread count; the first error by index
+// is rethrown.
+void parallel_for(std::size_t count, unsigned threads,
+                  const std::function<void(std::size_t)>& work) {
+  if (threads <= 1 || count <= 1) {
+    for (std::size_t i = 0; i < count; ++i) work(i);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0};
+  auto run = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        work(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(threads, count); ++t) pool.emplace_back(run);
+  run();
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+}
+
 // The decomposition of every region of one asset, and the levels read off its
 // trees.
 class AssetDecomposer {
  public:
-  AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings)
+  AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings,
+                  unsigned threads)
       : settings_(settings) {
-    trees_.reserve(regions.size());
-    for (const Region& region : regions) trees_.push_back(decompose(region, settings));
+    trees_.resize(regions.size());
+    parallel_for(regions.size(), threads,
+                 [&](std::size_t r) { trees_[r] = decompose(regions[r], settings); });
   }
 
   std::vector<Piece> pieces_at(double tau) const {
@@ -302,7 +335,9 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
 }
 
-CookedAsset cook_one(const InputFile& file, const Settings& settings) {
+// threads: how many may work on this one asset (its regions), when there are fewer
+// assets than threads.
+CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned threads) {
   auto start = Clock::now();
   PreparedInput input =
       is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
@@ -349,7 +384,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings) {
   decompose_settings.sc = settings.sc;
   decompose_settings.sd = settings.sd;
   auto decompose_start = Clock::now();
-  AssetDecomposer decomposer(regions, decompose_settings);
+  AssetDecomposer decomposer(regions, decompose_settings, threads);
   if (settings.max_pieces > 0) {
     double budget_tau = decomposer.tau_for_budget(level_taus.front(), settings.max_pieces);
     if (budget_tau > level_taus.front()) {
@@ -445,20 +480,45 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
   std::vector<InputFile> files = collect_inputs(inputs);
+  // Tracing and decomposing allocate and free buffers of megabytes; glibc would map each one
+  // afresh and give it back, so that every asset paid its page faults again (a tenth of a
+  // cook). Freed memory stays in the process for the next buffer instead.
+  static std::once_flag reuse_freed_memory;
+  std::call_once(reuse_freed_memory, [] {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  });
   CookResult result;
   result.assets.resize(files.size());
 
   // Assets are independent: cook them on a pool of threads, each into its own
   // slot, so the result never depends on the thread count. The first error (in
   // input order) wins.
-  unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
-  threads = std::clamp<unsigned>(threads, 1, std::max<std::size_t>(files.size(), 1));
+  const unsigned all_threads =
+      std::max(1u, settings.threads ? settings.threads : std::thread::hardware_concurrency());
+  const unsigned threads =
+      std::clamp<unsigned>(all_threads, 1, std::max<std::size_t>(files.size(), 1));
   std::vector<std::exception_ptr> errors(files.size());
+  // The largest files first (their size stands for their work), so that a large asset does not
+  // start last and leave the other threads idle.
+  std::vector<std::size_t> order(files.size());
+  std::vector<std::uintmax_t> sizes(files.size(), 0);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    order[i] = i;
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(files[i].path, error);
+    if (!error) sizes[i] = size;
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
+  // One huge image or sheet alone: its threads split its regions instead.
+  const unsigned per_asset = files.size() == 1 ? all_threads : 1;
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < files.size(); i = next++) {
+    for (std::size_t k = next++; k < files.size(); k = next++) {
+      const std::size_t i = order[k];
       try {
-        result.assets[i] = cook_one(files[i], settings);
+        result.assets[i] = cook_one(files[i], settings, per_asset);
       } catch (const std::logic_error& e) {
         // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
         // violation, with the asset.

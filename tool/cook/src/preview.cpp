@@ -1,13 +1,13 @@
+// The preview: drawn on our own small canvas (canvas.cpp) and encoded with libpng, so that the
+// hullcook executable links no image-processing library.
 #include "hullcook/cook/preview.h"
 
+#include "canvas.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
 
 #include <glm/common.hpp>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <array>
@@ -25,43 +25,9 @@ namespace {
 
 constexpr int kMargin = 16;  // [canvas px] around the sprite, so outlines on its border show
 
-// The sprite as 8-bit BGRA. OpenCV decodes PNG, BMP and WebP; the tracer's reader covers the
-// rest (TGA) as a white silhouette with its alpha.
-cv::Mat load_sprite(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-  cv::Mat decoded;
-  if (!bytes.empty()) {
-    try {
-      decoded = cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8U, bytes.data()),
-                             cv::IMREAD_UNCHANGED);
-    } catch (const cv::Exception&) {
-      decoded.release();
-    }
-  }
-  if (decoded.empty()) {
-    TraceSettings settings;
-    settings.max_pixels = std::numeric_limits<std::uint64_t>::max();
-    AlphaImage alpha = load_alpha(path, settings);  // throws InputError naming the file
-    cv::Mat channel(alpha.height, alpha.width, CV_8U, alpha.alpha.data());
-    cv::Mat white(alpha.height, alpha.width, CV_8U, cv::Scalar(255));
-    cv::merge(std::vector<cv::Mat>{white, white, white, channel}, decoded);
-    return decoded;
-  }
-  if (decoded.depth() == CV_16U) decoded.convertTo(decoded, CV_8U, 1.0 / 257.0);
-  cv::Mat bgra;
-  switch (decoded.channels()) {
-    case 1:
-      cv::cvtColor(decoded, bgra, cv::COLOR_GRAY2BGRA);
-      break;
-    case 3:
-      cv::cvtColor(decoded, bgra, cv::COLOR_BGR2BGRA);
-      break;
-    default:
-      bgra = decoded;
-  }
-  return bgra;
-}
+using preview_detail::Canvas;
+using preview_detail::Colour;
+using preview_detail::encode_png;
 
 // Where a point in output units lands on the canvas.
 struct CanvasMapping {
@@ -83,34 +49,37 @@ std::vector<Ring> rings_of(const Region& region) {
   return rings;
 }
 
-// A distinct, reproducible colour per piece (golden-ratio hues), as B, G, R.
-cv::Scalar piece_colour(std::size_t index) {
+// A distinct, reproducible colour per piece (golden-ratio hues), as R, G, B.
+Colour piece_colour(std::size_t index, double shade = 1.0) {
   double hue = std::fmod(0.13 + 0.6180339887 * static_cast<double>(index), 1.0) * 6.0;
   double f = hue - std::floor(hue), v = 220, p = v * 0.2, q = v * (1 - 0.8 * f),
          t = v * (1 - 0.8 * (1 - f));
   std::array<std::array<double, 3>, 6> rgb{
       {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}}};
   const auto& c = rgb[static_cast<int>(hue) % 6];
-  return {c[2], c[1], c[0]};
+  auto channel = [&](double value) {
+    return static_cast<std::uint8_t>(std::lround(value * shade));
+  };
+  return {channel(c[0]), channel(c[1]), channel(c[2])};
 }
 
-const cv::Scalar kOutlineColour{30, 30, 225};     // red
-const cv::Scalar kComponentColour{20, 200, 235};  // yellow
+const Colour kOutlineColour{225, 30, 30};     // red
+const Colour kComponentColour{235, 200, 20};  // yellow
 
-std::string hex(const cv::Scalar& bgr) {
+std::string hex(const Colour& rgb) {
   char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", static_cast<int>(bgr[2]),
-                static_cast<int>(bgr[1]), static_cast<int>(bgr[0]));
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
   return text;
 }
 
-std::string base64(const std::vector<std::uint8_t>& bytes) {
+std::string base64(const std::string& bytes) {
   static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(std::uint8_t(bytes[i])); };
   std::string text;
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    std::uint32_t chunk = static_cast<std::uint32_t>(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) chunk |= static_cast<std::uint32_t>(bytes[i + 1]) << 8;
-    if (i + 2 < bytes.size()) chunk |= bytes[i + 2];
+    std::uint32_t chunk = byte(i) << 16;
+    if (i + 1 < bytes.size()) chunk |= byte(i + 1) << 8;
+    if (i + 2 < bytes.size()) chunk |= byte(i + 2);
     text += alphabet[(chunk >> 18) & 63];
     text += alphabet[(chunk >> 12) & 63];
     text += i + 1 < bytes.size() ? alphabet[(chunk >> 6) & 63] : '=';
@@ -119,22 +88,16 @@ std::string base64(const std::vector<std::uint8_t>& bytes) {
   return text;
 }
 
-std::vector<std::uint8_t> png_bytes(const cv::Mat& image) {
-  std::vector<std::uint8_t> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw OutputError("preview: PNG encoding failed");
-  return bytes;
-}
-
 class Preview {
  public:
   Preview(const std::filesystem::path& image, const CookedAsset& asset) : asset_(asset) {
     mapping_.transform = asset.transform;
     if (!(mapping_.transform.scale > 0)) mapping_.transform.scale = 1;
     if (!image.empty()) {
-      sprite_ = load_sprite(image);
-      width_ = sprite_.cols;
-      height_ = sprite_.rows;
-      int long_side = std::max({sprite_.cols, sprite_.rows, 1});
+      sprite_ = load_rgba(image, std::numeric_limits<std::uint64_t>::max());
+      width_ = sprite_.width;
+      height_ = sprite_.height;
+      int long_side = std::max({sprite_.width, sprite_.height, 1});
       mapping_.factor = std::max(1, (kPreviewMinSize + long_side - 1) / long_side);
     } else {
       // No sprite: frame the geometry, scaled so its long side is kPreviewMinSize.
@@ -159,32 +122,22 @@ class Preview {
   }
 
   std::string png() const {
-    cv::Mat canvas(canvas_height_, canvas_width_, CV_8UC3, cv::Scalar(255, 255, 255));
-    if (!sprite_.empty()) draw_sprite(canvas);
-    cv::Mat fills = canvas.clone();
+    Canvas canvas(canvas_width_, canvas_height_, {255, 255, 255});
+    if (!sprite_.rgba.empty()) draw_sprite(canvas);
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
-      std::vector<std::vector<cv::Point>> hull{points(asset_.pieces[i].hull)};
-      cv::fillPoly(fills, hull, piece_colour(i), cv::LINE_AA, kShift);
+      canvas.fill({points(asset_.pieces[i].hull)}, piece_colour(i), 0.35);
     }
-    cv::addWeighted(fills, 0.35, canvas, 0.65, 0, canvas);
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
-      std::vector<std::vector<cv::Point>> hull{points(asset_.pieces[i].hull)};
-      cv::polylines(canvas, hull, true, piece_colour(i) * 0.7, 2, cv::LINE_AA, kShift);
+      canvas.stroke(points(asset_.pieces[i].hull), piece_colour(i, 0.7), 2);
     }
     for (const CookedPiece& piece : asset_.pieces) {
-      for (const Ring& ring : rings_of(piece.component)) {
-        std::vector<std::vector<cv::Point>> line{points(ring)};
-        cv::polylines(canvas, line, true, kComponentColour, 2, cv::LINE_AA, kShift);
-      }
+      for (const Ring& ring : rings_of(piece.component))
+        canvas.stroke(points(ring), kComponentColour, 2);
     }
     for (const Region& region : asset_.regions) {
-      for (const Ring& ring : rings_of(region)) {
-        std::vector<std::vector<cv::Point>> line{points(ring)};
-        cv::polylines(canvas, line, true, kOutlineColour, 2, cv::LINE_AA, kShift);
-      }
+      for (const Ring& ring : rings_of(region)) canvas.stroke(points(ring), kOutlineColour, 2);
     }
-    std::vector<std::uint8_t> bytes = png_bytes(canvas);
-    return {bytes.begin(), bytes.end()};
+    return encode_png(canvas.rgb().data(), canvas.width(), canvas.height(), 3);
   }
 
   std::string svg() const {
@@ -194,12 +147,12 @@ class Preview {
         << "\">\n"
         << "<title>" << escaped(asset_.name.empty() ? asset_.source : asset_.name) << "</title>\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    if (!sprite_.empty()) {
+    if (!sprite_.rgba.empty()) {
       out << "<image x=\"" << kMargin << "\" y=\"" << kMargin << "\" width=\""
           << width_ * mapping_.factor << "\" height=\"" << height_ * mapping_.factor
           << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" opacity=\"0.6\" "
              "href=\"data:image/png;base64,"
-          << base64(png_bytes(sprite_)) << "\"/>\n";
+          << base64(encode_png(sprite_.rgba.data(), sprite_.width, sprite_.height, 4)) << "\"/>\n";
     }
     out << "<g id=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
@@ -221,14 +174,10 @@ class Preview {
   }
 
  private:
-  static constexpr int kShift = 4;  // sub-pixel bits of OpenCV's drawing
-
-  std::vector<cv::Point> points(const Ring& ring) const {
-    std::vector<cv::Point> result;
-    for (Vec2 p : ring) {
-      Vec2 c = mapping_(p) * double(1 << kShift);
-      result.emplace_back(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
-    }
+  Ring points(const Ring& ring) const {
+    Ring result;
+    result.reserve(ring.size());
+    for (Vec2 p : ring) result.push_back(mapping_(p));
     return result;
   }
 
@@ -262,19 +211,24 @@ class Preview {
     return result;
   }
 
-  // The scaled sprite over a checkerboard, washed out so that the drawing stands out.
-  void draw_sprite(cv::Mat& canvas) const {
-    cv::Mat scaled;
-    cv::resize(sprite_, scaled, {}, mapping_.factor, mapping_.factor, cv::INTER_NEAREST);
-    for (int y = 0; y < scaled.rows; ++y) {
-      for (int x = 0; x < scaled.cols; ++x) {
-        const cv::Vec4b& s = scaled.at<cv::Vec4b>(y, x);
-        double checker = ((x / 8 + y / 8) % 2) ? 205 : 240;
-        double alpha = s[3] / 255.0;
-        cv::Vec3b& c = canvas.at<cv::Vec3b>(y + kMargin, x + kMargin);
+  // The sprite scaled by an integer factor (nearest neighbour) over a checkerboard, washed out so
+  // that the drawing stands out.
+  void draw_sprite(Canvas& canvas) const {
+    const int factor = static_cast<int>(mapping_.factor);
+    const int columns = std::min(sprite_.width * factor, canvas.width() - kMargin);
+    const int rows = std::min(sprite_.height * factor, canvas.height() - kMargin);
+    for (int y = 0; y < rows; ++y) {
+      const std::uint8_t* source_row =
+          sprite_.rgba.data() + static_cast<std::size_t>(y / factor) * sprite_.width * 4;
+      for (int x = 0; x < columns; ++x) {
+        const std::uint8_t* s = source_row + static_cast<std::size_t>(x / factor) * 4;
+        const double checker = ((x / 8 + y / 8) % 2) ? 205 : 240;
+        const double alpha = s[3] / 255.0;
+        std::uint8_t* c = canvas.pixel(x + kMargin, y + kMargin);
         for (int k = 0; k < 3; ++k) {
-          double blended = alpha * s[k] + (1 - alpha) * checker;
-          c[k] = cv::saturate_cast<std::uint8_t>(0.6 * blended + 0.4 * 255);
+          const double blended = alpha * s[k] + (1 - alpha) * checker;
+          c[k] = static_cast<std::uint8_t>(
+              std::clamp(std::lround(0.6 * blended + 0.4 * 255), 0L, 255L));
         }
       }
     }
@@ -282,7 +236,7 @@ class Preview {
 
   const CookedAsset& asset_;
   CanvasMapping mapping_;
-  cv::Mat sprite_;
+  RgbaImage sprite_;
   double width_ = 0, height_ = 0;  // [px] of the frame
   int canvas_width_ = 0, canvas_height_ = 0;
 };

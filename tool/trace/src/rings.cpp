@@ -21,12 +21,35 @@ constexpr double kTouch = 1e-9;
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+// The square of point_segment_distance(), as it is before its square root.
+double point_segment_distance2(Vec2 p, Vec2 a, Vec2 b) {
   Vec2 ab = b - a;
   double length2 = glm::dot(ab, ab);
   double t = length2 > 0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * ab));
+  Vec2 v = p - (a + t * ab);
+  return glm::dot(v, v);
 }
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  return std::sqrt(point_segment_distance2(p, a, b));
+}
+
+// Keeps the index of the largest distance, the first of equals, as comparing the distances
+// themselves would: the square root is taken only when the square grows (the square root is
+// monotone, so a distance can only be larger when its square is).
+class Farthest {
+ public:
+  void offer(int index, double distance2) {
+    if (!(distance2 > best2_) && index_ >= 0) return;
+    const double distance = std::sqrt(distance2);
+    if (distance > best_) best_ = distance, best2_ = distance2, index_ = index;
+  }
+  int index() const { return index_; }
+
+ private:
+  int index_ = -1;
+  double best_ = -1, best2_ = -1;
+};
 
 bool segments_touch(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (std::max(a.x, b.x) + kTouch < std::min(c.x, d.x) ||
@@ -113,12 +136,12 @@ class Simplifier {
     for (int i = 1; i < n; ++i) {
       if (ring[i].x < ring[a].x || (ring[i].x == ring[a].x && ring[i].y < ring[a].y)) a = i;
     }
-    int b = a;
-    double farthest = -1;
+    Farthest from_a;
     for (int i = 0; i < n; ++i) {
-      double d = glm::length(ring[i] - ring[a]);
-      if (d > farthest) farthest = d, b = i;
+      const Vec2 v = ring[i] - ring[a];
+      from_a.offer(i, glm::dot(v, v));
     }
+    const int b = from_a.index();
     keep_[r][a] = keep_[r][b] = 1;
     douglas_peucker(r, a, b);
     douglas_peucker(r, b, a);
@@ -135,13 +158,12 @@ class Simplifier {
   int farthest_interior(const Segment& s) const {
     const Ring& ring = rings_[s.ring];
     const int n = size(s.ring);
-    int best = -1;
-    double best_distance = -1;
-    for (int i = (s.from + 1) % n; i != s.to; i = (i + 1) % n) {
-      double d = point_segment_distance(ring[i], ring[s.from], ring[s.to]);
-      if (d > best_distance) best_distance = d, best = i;
+    const Vec2 a = ring[s.from], b = ring[s.to];
+    Farthest farthest;
+    for (int i = s.from + 1 == n ? 0 : s.from + 1; i != s.to; i = i + 1 == n ? 0 : i + 1) {
+      farthest.offer(i, point_segment_distance2(ring[i], a, b));
     }
-    return best;
+    return farthest.index();
   }
 
   void douglas_peucker(int r, int from, int to) {
@@ -199,7 +221,9 @@ class Simplifier {
   }
 
   // Pairs of segments that cross or touch, found through a uniform grid (each segment is
-  // entered in the cells its path crosses, with a small margin).
+  // entered in the cells its path crosses, with a small margin, so two segments that meet share
+  // a cell whatever the cell size). About one cell per segment, stored as one array of cell
+  // lists: the grid's size follows the segments, not the image.
   std::vector<std::pair<int, int>> touching_pairs(const std::vector<Segment>& segments) const {
     std::vector<std::pair<int, int>> result;
     if (segments.empty()) return result;
@@ -207,11 +231,12 @@ class Simplifier {
     for (const Ring& ring : rings_) {
       for (Vec2 p : ring) low = glm::min(low, p), high = glm::max(high, p);
     }
-    Vec2 extent = high - low;
-    double cell = std::max({4.0, extent.x / 1024.0, extent.y / 1024.0});
-    int columns = static_cast<int>(extent.x / cell) + 2,
-        rows = static_cast<int>(extent.y / cell) + 2;
-    std::vector<std::vector<int>> grid(static_cast<std::size_t>(columns) * rows);
+    const Vec2 extent = high - low;
+    const double cell =
+        std::max({4.0, std::sqrt(extent.x * extent.y / static_cast<double>(segments.size())),
+                  extent.x / 1024.0, extent.y / 1024.0});
+    const int columns = static_cast<int>(extent.x / cell) + 2,
+              rows = static_cast<int>(extent.y / cell) + 2;
     auto clamp_column = [&](double x) {
       return std::clamp(static_cast<int>(std::floor((x - low.x) / cell)), 0, columns - 1);
     };
@@ -219,9 +244,9 @@ class Simplifier {
       return std::clamp(static_cast<int>(std::floor((y - low.y) / cell)), 0, rows - 1);
     };
     const double margin = 1e-6;
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      Vec2 a = rings_[segments[s].ring][segments[s].from];
-      Vec2 b = rings_[segments[s].ring][segments[s].to];
+    auto for_each_cell = [&](const Segment& segment, auto&& visit) {
+      Vec2 a = rings_[segment.ring][segment.from];
+      Vec2 b = rings_[segment.ring][segment.to];
       if (a.x > b.x) std::swap(a, b);
       for (int column = clamp_column(a.x - margin); column <= clamp_column(b.x + margin);
            ++column) {
@@ -234,15 +259,28 @@ class Simplifier {
         }
         if (y0 > y1) std::swap(y0, y1);
         for (int row = clamp_row(y0 - margin); row <= clamp_row(y1 + margin); ++row) {
-          grid[static_cast<std::size_t>(row) * columns + column].push_back(static_cast<int>(s));
+          visit(static_cast<std::size_t>(row) * columns + column);
         }
       }
+    };
+    std::vector<int>& starts = grid_starts_;
+    std::vector<int>& entries = grid_entries_;
+    starts.assign(static_cast<std::size_t>(columns) * rows + 1, 0);
+    for (const Segment& segment : segments) {
+      for_each_cell(segment, [&](std::size_t c) { ++starts[c + 1]; });
     }
-    for (const std::vector<int>& bucket : grid) {
-      for (std::size_t i = 0; i < bucket.size(); ++i) {
-        for (std::size_t j = i + 1; j < bucket.size(); ++j) {
-          if (touch(segments[bucket[i]], segments[bucket[j]])) {
-            result.emplace_back(bucket[i], bucket[j]);
+    for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
+    entries.resize(static_cast<std::size_t>(starts.back()));
+    std::vector<int>& fill = grid_fill_;
+    fill.assign(starts.begin(), starts.end() - 1);
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+      for_each_cell(segments[s], [&](std::size_t c) { entries[fill[c]++] = static_cast<int>(s); });
+    }
+    for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
+      for (int i = starts[c]; i < starts[c + 1]; ++i) {
+        for (int j = i + 1; j < starts[c + 1]; ++j) {
+          if (touch(segments[entries[i]], segments[entries[j]])) {
+            result.emplace_back(entries[i], entries[j]);
           }
         }
       }
@@ -253,6 +291,8 @@ class Simplifier {
   const std::vector<Ring>& rings_;
   double eps_;
   std::vector<std::vector<char>> keep_;
+  // The grid of touching_pairs(), kept between rounds so that it is allocated once.
+  mutable std::vector<int> grid_starts_, grid_entries_, grid_fill_;
 };
 
 // Drops vertices on the straight line through their neighbours (within rounding), which does not
@@ -303,31 +343,54 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
         leftmost[r] = static_cast<int>(i);
     }
   }
-  // Edges bucketed by the unit rows their y range overlaps, sorted by their smallest x.
+  // Edges bucketed by the unit rows their y range overlaps, sorted by their smallest x; the
+  // buckets are ranges of one array.
   struct BucketEdge {
     double min_x;
     int ring;
     int index;
   };
   const int rows = static_cast<int>(std::floor(high_y - low_y)) + 1;
-  std::vector<std::vector<BucketEdge>> buckets(rows);
+  auto row_range = [&](Vec2 a, Vec2 b) {
+    return std::pair{static_cast<int>(std::floor(std::min(a.y, b.y) - low_y)),
+                     static_cast<int>(std::floor(std::max(a.y, b.y) - low_y))};
+  };
+  std::vector<int> starts(static_cast<std::size_t>(rows) + 1, 0);
+  for (int r = 0; r < count; ++r) {
+    for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
+      auto [first, last] = row_range(rings[r][i], rings[r][(i + 1) % n]);
+      for (int row = first; row <= last; ++row) ++starts[row + 1];
+    }
+  }
+  for (int row = 0; row < rows; ++row) starts[row + 1] += starts[row];
+  std::vector<BucketEdge> edges(static_cast<std::size_t>(starts.back()));
+  std::vector<int> fill(starts.begin(), starts.end() - 1);
   std::vector<double> widest(rows, 0.0);  // the largest x extent of an edge in each bucket
   for (int r = 0; r < count; ++r) {
     for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
       Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
-      int first = static_cast<int>(std::floor(std::min(a.y, b.y) - low_y));
-      int last = static_cast<int>(std::floor(std::max(a.y, b.y) - low_y));
+      auto [first, last] = row_range(a, b);
       for (int row = first; row <= last; ++row) {
-        buckets[row].push_back({std::min(a.x, b.x), r, static_cast<int>(i)});
+        edges[fill[row]++] = {std::min(a.x, b.x), r, static_cast<int>(i)};
         widest[row] = std::max(widest[row], std::abs(b.x - a.x));
       }
     }
   }
-  for (auto& bucket : buckets) {
-    std::sort(bucket.begin(), bucket.end(), [](const BucketEdge& e, const BucketEdge& f) {
-      return e.min_x != f.min_x ? e.min_x < f.min_x
-                                : (e.ring != f.ring ? e.ring < f.ring : e.index < f.index);
-    });
+  // A row's edges are sorted (for the walk below) only when the row has many queries: with a
+  // few, one scan of its edges is cheaper.
+  constexpr int kScanQueries = 8;
+  auto row_of = [&](int r) {
+    return static_cast<int>(std::floor(rings[r][leftmost[r]].y - low_y));
+  };
+  std::vector<int> queries(rows, 0);
+  for (int r = 0; r < count; ++r) ++queries[row_of(r)];
+  for (int row = 0; row < rows; ++row) {
+    if (queries[row] <= kScanQueries) continue;
+    std::sort(edges.begin() + starts[row], edges.begin() + starts[row + 1],
+              // Edges of equal min_x may come in any order: rings do not touch, so no two
+              // rings cross a row at the same x, and the walk below stops only past every
+              // edge that could still be hit.
+              [](const BucketEdge& e, const BucketEdge& f) { return e.min_x < f.min_x; });
   }
   std::vector<char> outer(count);
   for (int r = 0; r < count; ++r) outer[r] = signed_area(rings[r]) > 0;
@@ -343,20 +406,28 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
     Vec2 p = rings[r][leftmost[r]];
     int hit = -1;
     double hit_x = std::numeric_limits<double>::lowest();
-    const int row = static_cast<int>(std::floor(p.y - low_y));
-    const std::vector<BucketEdge>& bucket = buckets[row];
-    auto end = std::lower_bound(bucket.begin(), bucket.end(), p.x,
-                                [](const BucketEdge& e, double x) { return e.min_x < x; });
-    // Walking leftwards: an edge starting at min_x crosses at most at min_x + widest.
-    for (auto e = end; e != bucket.begin();) {
-      --e;
-      if (e->min_x + widest[row] <= hit_x) break;
-      if (e->ring == r) continue;
-      const Ring& ring = rings[e->ring];
-      Vec2 a = ring[e->index], b = ring[(e->index + 1) % ring.size()];
-      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
+    const int row = row_of(r);
+    const auto bucket_begin = edges.begin() + starts[row],
+               bucket_end = edges.begin() + starts[row + 1];
+    auto consider = [&](const BucketEdge& e) {
+      if (e.ring == r || !(e.min_x < p.x)) return;
+      const Ring& ring = rings[e.ring];
+      Vec2 a = ring[e.index], b = ring[(e.index + 1) % ring.size()];
+      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) return;
       double x = a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
-      if (x < p.x && x > hit_x) hit_x = x, hit = e->ring;
+      if (x < p.x && x > hit_x) hit_x = x, hit = e.ring;
+    };
+    if (queries[row] <= kScanQueries) {
+      for (auto e = bucket_begin; e != bucket_end; ++e) consider(*e);
+    } else {
+      auto end = std::lower_bound(bucket_begin, bucket_end, p.x,
+                                  [](const BucketEdge& e, double x) { return e.min_x < x; });
+      // Walking leftwards: an edge starting at min_x crosses at most at min_x + widest.
+      for (auto e = end; e != bucket_begin;) {
+        --e;
+        if (e->min_x + widest[row] <= hit_x) break;
+        consider(*e);
+      }
     }
     if (hit < 0) continue;
     parents[r] = outer[r] != outer[hit] ? hit : parents[hit];

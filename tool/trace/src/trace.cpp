@@ -8,6 +8,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace hullcook {
 namespace {
@@ -29,6 +31,9 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 // edges e_k from c_k to c_{k+1}. Walking the corners in that order, each edge leaving the opaque
 // side is joined to the next edge entering it; in a saddle cell that joins the two opaque
 // corners, which is the 8-connected rule.
+//
+// Cost: a pass over the pixels that skips eight uniform cells at a time (comparing words of the
+// two rows' opaque flags), and the real work only in the cells the outline crosses.
 std::vector<Ring> march(const AlphaImage& image, int threshold) {
   const int width = image.width, height = image.height;
   // The padding is transparent even at threshold 0, where every real pixel is opaque.
@@ -39,11 +44,34 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     return image.alpha[static_cast<std::size_t>(y) * width + x];
   };
 
+  // Opaque flags (0 or 1) of pixel rows y and y+1, index x+1, with the transparent padding at both
+  // ends and eight spare zero bytes for the word loads.
+  const std::size_t stride = static_cast<std::size_t>(width) + 2 + 8;
+  std::vector<std::uint8_t> flags(2 * stride, 0);
+  std::uint8_t* upper = flags.data();
+  std::uint8_t* lower = flags.data() + stride;
+  auto load_flags = [&](int y, std::uint8_t* out) {
+    if (y < 0 || y >= height) {
+      std::fill(out, out + stride, std::uint8_t{0});
+      return;
+    }
+    const std::uint8_t* alpha = image.alpha.data() + static_cast<std::size_t>(y) * width;
+    for (int x = 0; x < width; ++x) out[x + 1] = alpha[x] >= threshold;
+  };
+  auto word = [](const std::uint8_t* p) {
+    std::uint64_t w;
+    std::memcpy(&w, p, sizeof w);
+    return w;
+  };
+
   std::vector<Vec2> points;
   std::vector<int> next;
   // Point ids on the horizontal edges of pixel rows y and y+1 (indexed by the left pixel's x+1)
-  // and on the vertical edges of the current cell row (indexed by the pixel's x+1).
+  // and on the vertical edges of the current cell row (indexed by the pixel's x+1). An id is
+  // current only if made since the row that owns the array began (ids only grow), so the
+  // arrays are never cleared.
   std::vector<int> top(width + 2, -1), bottom(width + 2, -1), vertical(width + 3, -1);
+  int top_first = 0, row_first = 0;  // the first ids made in cell rows y-1 and y
   auto crossing = [&](int x0, int y0, int x1, int y1) {
     double v0 = value(x0, y0), v1 = value(x1, y1);
     double t = (level - v0) / (v1 - v0);
@@ -53,45 +81,65 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     return static_cast<int>(points.size()) - 1;
   };
 
-  for (int y = -1; y < height; ++y) {
-    std::fill(bottom.begin(), bottom.end(), -1);
-    std::fill(vertical.begin(), vertical.end(), -1);
-    for (int x = -1; x < width; ++x) {
-      const std::array<bool, 4> opaque{value(x, y) >= threshold, value(x + 1, y) >= threshold,
-                                       value(x + 1, y + 1) >= threshold,
-                                       value(x, y + 1) >= threshold};
-      if (opaque[0] == opaque[1] && opaque[1] == opaque[2] && opaque[2] == opaque[3]) continue;
-      std::array<int*, 4> slots{&top[x + 1], &vertical[x + 2], &bottom[x + 1], &vertical[x + 1]};
-      const std::array<std::array<int, 4>, 4> ends{
-          {{x, y, x + 1, y}, {x + 1, y, x + 1, y + 1}, {x, y + 1, x + 1, y + 1}, {x, y, x, y + 1}}};
-      auto point_on = [&](int k) {
-        if (*slots[k] < 0) *slots[k] = crossing(ends[k][0], ends[k][1], ends[k][2], ends[k][3]);
-        return *slots[k];
-      };
-      for (int k = 0; k < 4; ++k) {
-        if (!(opaque[k] && !opaque[(k + 1) % 4])) continue;  // e_k leaves the opaque side
-        for (int step = 1; step < 4; ++step) {
-          int e = (k + step) % 4;
-          if (!opaque[e] && opaque[(e + 1) % 4]) {  // e enters the opaque side
-            next[point_on(k)] = point_on(e);
-            break;
-          }
+  auto cell = [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>(x + 1);
+    const std::array<bool, 4> opaque{upper[i] != 0, upper[i + 1] != 0, lower[i + 1] != 0,
+                                     lower[i] != 0};
+    std::array<int*, 4> slots{&top[x + 1], &vertical[x + 2], &bottom[x + 1], &vertical[x + 1]};
+    const std::array<int, 4> firsts{top_first, row_first, row_first, row_first};
+    const std::array<std::array<int, 4>, 4> ends{
+        {{x, y, x + 1, y}, {x + 1, y, x + 1, y + 1}, {x, y + 1, x + 1, y + 1}, {x, y, x, y + 1}}};
+    auto point_on = [&](int k) {
+      if (*slots[k] < firsts[k])
+        *slots[k] = crossing(ends[k][0], ends[k][1], ends[k][2], ends[k][3]);
+      return *slots[k];
+    };
+    for (int k = 0; k < 4; ++k) {
+      if (!(opaque[k] && !opaque[(k + 1) % 4])) continue;  // e_k leaves the opaque side
+      for (int step = 1; step < 4; ++step) {
+        int e = (k + step) % 4;
+        if (!opaque[e] && opaque[(e + 1) % 4]) {  // e enters the opaque side
+          next[point_on(k)] = point_on(e);
+          break;
         }
       }
     }
+  };
+
+  load_flags(-1, upper);
+  for (int y = -1; y < height; ++y) {
+    load_flags(y + 1, lower);
+    row_first = static_cast<int>(points.size());
+    // Cells x = -1 .. width-1 are i = x+1 = 0 .. width; eight at a time while uniform.
+    for (int i = 0; i <= width;) {
+      const std::uint64_t a = word(upper + i), a1 = word(upper + i + 1), b = word(lower + i),
+                          b1 = word(lower + i + 1);
+      if (((a | a1 | b | b1) ^ (a & a1 & b & b1)) == 0) {
+        i += 8;
+        continue;
+      }
+      for (const int end = std::min(i + 8, width + 1); i < end; ++i) {
+        const int corners = upper[i] + upper[i + 1] + lower[i] + lower[i + 1];
+        if (corners != 0 && corners != 4) cell(i - 1, y);
+      }
+    }
     std::swap(top, bottom);
+    std::swap(upper, lower);
+    top_first = row_first;
   }
 
   std::vector<Ring> rings;
   std::vector<char> visited(points.size(), 0);
   for (std::size_t start = 0; start < points.size(); ++start) {
     if (visited[start]) continue;
-    Ring ring;
-    for (int p = static_cast<int>(start); !visited[p]; p = next[p]) {
+    std::size_t length = 0;
+    for (int p = static_cast<int>(start); !visited[p]; p = next[p]) visited[p] = 2, ++length;
+    Ring& ring = rings.emplace_back();
+    ring.reserve(length);
+    for (int p = static_cast<int>(start); visited[p] == 2; p = next[p]) {
       visited[p] = 1;
       ring.push_back(points[p]);
     }
-    rings.push_back(std::move(ring));
   }
   return rings;
 }

@@ -15,7 +15,7 @@ namespace hullcook {
 // and is mapped back to pixels with the inverse of asset.transform.
 //
 // image may be empty (an asset cooked from a .poly file): the geometry is then drawn on a blank
-// canvas framing it. out ends in .png (raster, OpenCV) or .svg (text; the sprite is embedded as
+// canvas framing it. out ends in .png (raster, libpng) or .svg (text; the sprite is embedded as
 // a PNG). Written with write_file_atomically(): nothing is left behind on failure.
 // Throws InputError if the image cannot be read, UsageError for another extension, OutputError if
 // out cannot be written.

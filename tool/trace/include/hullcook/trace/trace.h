@@ -60,6 +60,18 @@ AlphaImage load_alpha(const std::filesystem::path& path, const TraceSettings& se
 AlphaImage decode_alpha(const std::string& bytes, const std::string& name,
                         const TraceSettings& settings);
 
+// An image as 8-bit RGBA, for drawing it (an image without alpha is opaque).
+struct RgbaImage {
+  int width = 0;                   // [px]
+  int height = 0;                  // [px]
+  bool has_alpha = false;          // the file has an alpha channel (or PNG/BMP/TGA equivalent)
+  std::vector<std::uint8_t> rgba;  // row-major, width * height * 4 values
+};
+
+// Reads any image load_alpha() reads, as RGBA. Throws InputError as load_alpha() does (but for
+// the missing alpha channel, which is no error here).
+RgbaImage load_rgba(const std::filesystem::path& path, std::uint64_t max_pixels);
+
 struct TraceResult {
   int width = 0;   // [px]
   int height = 0;  // [px]

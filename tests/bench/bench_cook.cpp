@@ -1,0 +1,559 @@
+// bench_cook: a cook measured against the speed of decoding (issue 17), printed in one run with
+// the targets beside the figures:
+//   1. process start-up: `hullcook --version` and a cook of one 64x64 sprite beside /bin/true;
+//   2. the decode floor (libpng's png_read_image / libwebp's decoder alone, file read included)
+//      and hullcook's own decoding against it;
+//   3. each stage after decoding (trace, decompose, clean + engine limits, writing) and its ratio
+//      to the decode floor, one thread;
+//   4. the whole cook with 1 and 2 threads, and the peak memory of the cooking process;
+//   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent).
+// On samples/sprites and on a synthetic set written here (many sizes, holes, many blobs).
+// Options: --runs N (repetitions, default 5), --quick (fewer and smaller images); any other
+// option (scripts/bench passes Google Benchmark's) is ignored.
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/clean.h"
+#include "hullcook/trace/trace.h"
+
+#include <fcntl.h>
+#include <png.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <webp/decode.h>
+#include <webp/encode.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace hullcook;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(std::lround(q * (values.size() - 1)))];
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// ---- Images written for the benchmark -----------------------------------------------------------
+
+struct Rgba {
+  int width, height;
+  std::vector<std::uint8_t> pixels;
+};
+
+void append(png_structp png, png_bytep data, png_size_t size) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<char*>(data), size);
+}
+
+// The PNG forms games ship, for the decode floor: RGBA and grey + alpha at 8 and 16 bits, and
+// palette + tRNS (the alpha quantised to 256 entries: palette entry i is grey i, alpha i).
+enum class PngForm { rgba8, rgba16, grey_alpha8, grey_alpha16, palette };
+
+bool write_png_rows(png_structp png, png_infop info, std::string& out, int width, int height,
+                    PngForm form, std::vector<png_bytep>& rows, std::vector<png_color>& palette,
+                    std::vector<png_byte>& alphas) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, &out, append, nullptr);
+  const bool sixteen = form == PngForm::rgba16 || form == PngForm::grey_alpha16;
+  const int type = form == PngForm::palette ? PNG_COLOR_TYPE_PALETTE
+                   : form == PngForm::grey_alpha8 || form == PngForm::grey_alpha16
+                       ? PNG_COLOR_TYPE_GRAY_ALPHA
+                       : PNG_COLOR_TYPE_RGB_ALPHA;
+  png_set_IHDR(png, info, width, height, sixteen ? 16 : 8, type, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (form == PngForm::palette) {
+    png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+    png_set_tRNS(png, info, alphas.data(), static_cast<int>(alphas.size()), nullptr);
+  }
+  png_write_info(png, info);
+  png_write_image(png, rows.data());
+  png_write_end(png, nullptr);
+  return true;
+}
+
+void write_png(const fs::path& path, const Rgba& image, PngForm form = PngForm::rgba8) {
+  const bool sixteen = form == PngForm::rgba16 || form == PngForm::grey_alpha16;
+  const int channels = form == PngForm::palette                                        ? 1
+                       : form == PngForm::grey_alpha8 || form == PngForm::grey_alpha16 ? 2
+                                                                                       : 4;
+  const std::size_t row_bytes = std::size_t(image.width) * channels * (sixteen ? 2 : 1);
+  std::vector<png_byte> samples(row_bytes * image.height);
+  std::vector<png_bytep> rows;
+  for (int y = 0; y < image.height; ++y) {
+    png_byte* row = samples.data() + row_bytes * y;
+    rows.push_back(row);
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixels.data() + (std::size_t(y) * image.width + x) * 4;
+      const std::uint8_t grey = static_cast<std::uint8_t>((p[0] + p[1] + p[2]) / 3);
+      const std::uint8_t values[4] = {p[0], p[1], p[2], p[3]};
+      const std::uint8_t grey_alpha[2] = {grey, p[3]};
+      const std::uint8_t* v = channels == 2 ? grey_alpha : values;
+      if (form == PngForm::palette) {
+        row[x] = p[3];
+        continue;
+      }
+      for (int c = 0; c < channels; ++c) {
+        if (sixteen) {
+          row[(x * channels + c) * 2] = v[c];
+          row[(x * channels + c) * 2 + 1] = static_cast<png_byte>(v[c] ^ (x & 0x5a));
+        } else {
+          row[x * channels + c] = v[c];
+        }
+      }
+    }
+  }
+  std::vector<png_color> palette(256);
+  std::vector<png_byte> alphas(256);
+  for (int i = 0; i < 256; ++i) {
+    const auto v = static_cast<png_byte>(i);
+    palette[i] = {v, v, v};
+    alphas[i] = v;
+  }
+  std::string out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  const bool ok =
+      write_png_rows(png, info, out, image.width, image.height, form, rows, palette, alphas);
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw std::runtime_error("cannot write " + path.string());
+  std::ofstream(path, std::ios::binary).write(out.data(), static_cast<std::streamsize>(out.size()));
+}
+
+void write_webp(const fs::path& path, const Rgba& image) {
+  std::uint8_t* out = nullptr;
+  const std::size_t size =
+      WebPEncodeLosslessRGBA(image.pixels.data(), image.width, image.height, image.width * 4, &out);
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(out), static_cast<std::streamsize>(size));
+  WebPFree(out);
+}
+
+// Solid where field(x, y) > 0, with an anti-aliased edge of about a pixel and some colour.
+Rgba draw(int width, int height, const std::function<double(double, double)>& field) {
+  Rgba image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double f = field(x + 0.5, y + 0.5);
+      std::uint8_t* p = image.pixels.data() + (std::size_t(y) * width + x) * 4;
+      p[0] = static_cast<std::uint8_t>(x * 255 / std::max(1, width - 1));
+      p[1] = static_cast<std::uint8_t>(y * 255 / std::max(1, height - 1));
+      p[2] = 128;
+      p[3] = static_cast<std::uint8_t>(std::clamp(std::lround(127.5 + 255 * f), 0L, 255L));
+    }
+  }
+  return image;
+}
+
+// Discs of radius r on a grid of the given spacing, with wavy edges; every third has a hole.
+double blobs(double x, double y, double spacing, double r) {
+  const double cx = (std::floor(x / spacing) + 0.5) * spacing;
+  const double cy = (std::floor(y / spacing) + 0.5) * spacing;
+  const double dx = x - cx, dy = y - cy, d = std::hypot(dx, dy);
+  const double wave = 0.12 * r * std::sin(7 * std::atan2(dy, dx) + cx * 0.37 + cy * 0.11);
+  double f = r + wave - d;
+  const long cell = std::lround(cx / spacing) * 31 + std::lround(cy / spacing);
+  if (cell % 3 == 0) f = std::min(f, d - 0.35 * r);
+  return f;
+}
+
+// A big blob with holes: a wavy disc minus a ring of smaller wavy discs.
+double swiss(double x, double y, double size) {
+  const double c = size / 2, r = 0.45 * size;
+  const double dx = x - c, dy = y - c;
+  double f = r + 0.04 * size * std::sin(11 * std::atan2(dy, dx)) - std::hypot(dx, dy);
+  for (int k = 0; k < 9; ++k) {
+    const double a = k * 0.698, hx = c + 0.25 * size * std::cos(a),
+                 hy = c + 0.25 * size * std::sin(a);
+    f = std::min(f, std::hypot(x - hx, y - hy) - 0.06 * size);
+  }
+  return f;
+}
+
+std::vector<fs::path> write_synthetic_set(const fs::path& dir, bool quick) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::vector<fs::path> files;
+  auto add_png = [&](const std::string& name, const Rgba& image) {
+    files.push_back(dir / name);
+    write_png(files.back(), image);
+  };
+  const std::vector<int> sizes =
+      quick ? std::vector<int>{48, 160, 512} : std::vector<int>{32, 64, 128, 256, 512, 1024, 2048};
+  for (int size : sizes) {
+    add_png("swiss_" + std::to_string(size) + ".png",
+            draw(size, size, [&](double x, double y) { return swiss(x, y, size); }));
+    add_png("blobs_" + std::to_string(size) + ".png",
+            draw(size, size / 2, [&](double x, double y) { return blobs(x, y, 24, 9); }));
+  }
+  // One sprite in every PNG form, for the decode floor of each.
+  const int form_size = quick ? 256 : 768;
+  const Rgba form_image =
+      draw(form_size, form_size, [&](double x, double y) { return swiss(x, y, form_size); });
+  const std::pair<const char*, PngForm> forms[] = {{"form_rgba16.png", PngForm::rgba16},
+                                                   {"form_grey_alpha8.png", PngForm::grey_alpha8},
+                                                   {"form_grey_alpha16.png", PngForm::grey_alpha16},
+                                                   {"form_palette_trns.png", PngForm::palette}};
+  for (const auto& [name, form] : forms) {
+    files.push_back(dir / name);
+    write_png(files.back(), form_image, form);
+  }
+  const int sheet = quick ? 256 : 1024;
+  const Rgba webp = draw(sheet, sheet, [&](double x, double y) { return blobs(x, y, 40, 15); });
+  files.push_back(dir / ("sheet_" + std::to_string(sheet) + ".webp"));
+  write_webp(files.back(), webp);
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// ---- 1. Process start-up ------------------------------------------------------------------------
+
+struct ProcessRun {
+  double wall_ms;
+  double max_rss_mb;
+};
+
+ProcessRun run_process(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  const auto start = Clock::now();
+  pid_t pid = 0;
+  if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ) != 0) {
+    posix_spawn_file_actions_destroy(&actions);
+    return {-1, 0};
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  const double wall = ms_since(start);
+  posix_spawn_file_actions_destroy(&actions);
+  return {wall, usage.ru_maxrss / 1024.0};
+}
+
+void print_startup(const fs::path& scratch, int runs) {
+  const fs::path sprite = scratch / "sprite64.png";
+  write_png(sprite, draw(64, 64, [](double x, double y) { return blobs(x, y, 64, 26); }));
+  const std::string exe = HULLCOOK_EXE;
+  const std::vector<std::vector<std::string>> commands{
+      {"/bin/true"},
+      {exe, "--version"},
+      {exe, "cook", sprite.string(), "-o", (scratch / "sprite64.hcb").string(), "-q"}};
+  std::vector<std::vector<double>> times(commands.size());
+  std::vector<double> rss(commands.size());
+  for (const auto& command : commands) run_process(command);  // warm-up
+  for (int r = 0; r < runs * 8; ++r) {
+    for (std::size_t c = 0; c < commands.size(); ++c) {
+      const ProcessRun run = run_process(commands[c]);
+      times[c].push_back(run.wall_ms);
+      rss[c] = std::max(rss[c], run.max_rss_mb);
+    }
+  }
+  std::printf("\n1. Process start-up (%d runs each, interleaved; wall ms: median [p10 .. p90])\n",
+              runs * 8);
+  const double base = median(times[0]);
+  const char* names[] = {"/bin/true", "hullcook --version", "hullcook cook 64x64 -> .hcb"};
+  const char* targets[] = {"", "<= 15 ms above /bin/true", "<= 25 ms above /bin/true"};
+  for (std::size_t c = 0; c < commands.size(); ++c) {
+    std::printf("   %-30s %7.2f [%6.2f .. %6.2f]  above true %+7.2f  peak RSS %5.1f MB  %s\n",
+                names[c], median(times[c]), quantile(times[c], 0.1), quantile(times[c], 0.9),
+                median(times[c]) - base, rss[c], targets[c]);
+  }
+}
+
+// ---- 2. The decode floor ------------------------------------------------------------------------
+
+bool libpng_read(png_structp png, png_infop info, std::vector<png_byte>& pixels,
+                 std::vector<png_bytep>& rows, const std::string* bytes, std::size_t* at) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_read_fn(png, at, [](png_structp p, png_bytep out, png_size_t size) {
+    auto* cursor = static_cast<std::size_t*>(png_get_io_ptr(p));
+    const std::string* source = reinterpret_cast<const std::string*>(cursor[1]);
+    if (cursor[0] + size > source->size()) png_error(p, "short");
+    std::memcpy(out, source->data() + cursor[0], size);
+    cursor[0] += size;
+  });
+  (void)bytes;
+  png_read_info(png, info);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  const std::size_t row_bytes = png_get_rowbytes(png, info);
+  const std::size_t height = png_get_image_height(png, info);
+  pixels.resize(row_bytes * height);
+  rows.resize(height);
+  for (std::size_t y = 0; y < height; ++y) rows[y] = pixels.data() + row_bytes * y;
+  png_read_image(png, rows.data());
+  png_read_end(png, nullptr);
+  return true;
+}
+
+// libpng or libwebp alone, as an application would call it: the file read, then every pixel
+// decoded (no transform) into one buffer.
+double floor_decode_ms(const fs::path& path) {
+  const auto start = Clock::now();
+  const std::string bytes = read_file(path);
+  if (path.extension() == ".webp") {
+    int width = 0, height = 0;
+    std::uint8_t* pixels = WebPDecodeRGBA(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                          bytes.size(), &width, &height);
+    WebPFree(pixels);
+  } else {
+    std::vector<png_byte> pixels;
+    std::vector<png_bytep> rows;
+    std::size_t cursor[2] = {0, reinterpret_cast<std::size_t>(&bytes)};
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    libpng_read(png, info, pixels, rows, &bytes, cursor);
+    png_destroy_read_struct(&png, &info, nullptr);
+  }
+  return ms_since(start);
+}
+
+double best_of(int runs, const std::function<double()>& measure) {
+  double best = 1e300;
+  for (int r = 0; r < runs; ++r) best = std::min(best, measure());
+  return best;
+}
+
+// ---- 3, 4. Stages, threads, memory
+// ---------------------------------------------------------------
+
+Settings cook_settings(unsigned threads) {
+  Settings settings;
+  settings.tau = Tolerance{1.0, false};
+  settings.threads = threads;
+  return settings;
+}
+
+void print_set(const std::string& title, const std::vector<fs::path>& files,
+               const fs::path& scratch, int runs) {
+  std::printf("\n== %s: %zu images\n", title.c_str(), files.size());
+  double floor_ms = 0, decode_ms = 0, largest_image_mb = 0;
+  std::string forms;
+  for (const fs::path& file : files) {
+    const double floor_one = best_of(runs, [&] { return floor_decode_ms(file); });
+    const TraceSettings trace;
+    AlphaImage alpha;
+    const double decode_one = best_of(runs, [&] {
+      const auto start = Clock::now();
+      alpha = load_alpha(file, trace);
+      return ms_since(start);
+    });
+    floor_ms += floor_one, decode_ms += decode_one;
+    largest_image_mb = std::max(largest_image_mb, alpha.width * double(alpha.height) * 4 / 1e6);
+    const std::string name = file.filename().string();
+    if (name.rfind("form_", 0) == 0 || file.extension() == ".webp") {
+      char line[200];
+      std::snprintf(line, sizeof line, "     %-26s floor %7.2f ms, hullcook %7.2f ms = %.2fx\n",
+                    name.c_str(), floor_one, decode_one, decode_one / floor_one);
+      forms += line;
+    }
+  }
+  std::printf("2. Decode floor (libpng/libwebp alone, best of %d): %8.2f ms\n", runs, floor_ms);
+  std::printf(
+      "   hullcook's decoding (alpha only):          %8.2f ms  = %.2fx the floor"
+      "   (target <= 1.2x)\n",
+      decode_ms, decode_ms / floor_ms);
+  std::printf("%s", forms.c_str());
+
+  // Stages inside cook(), one thread: each asset's best run.
+  std::vector<CookedStats> best;
+  for (int r = 0; r < runs; ++r) {
+    CookResult result = cook(files, cook_settings(1));
+    if (best.empty())
+      best.resize(result.assets.size(), CookedStats{0, 0, 0, 1, 1e300, 1e300, 1e300, 1e300});
+    for (std::size_t i = 0; i < result.assets.size(); ++i) {
+      const CookedStats& s = result.assets[i].stats;
+      best[i].decode_ms = std::min(best[i].decode_ms, s.decode_ms);
+      best[i].trace_ms = std::min(best[i].trace_ms, s.trace_ms);
+      best[i].decompose_ms = std::min(best[i].decompose_ms, s.decompose_ms);
+      best[i].total_ms =
+          std::min(best[i].total_ms, s.total_ms - s.decode_ms - s.trace_ms - s.decompose_ms);
+    }
+  }
+  double trace = 0, decompose = 0, rest = 0;
+  for (const CookedStats& s : best)
+    trace += s.trace_ms, decompose += s.decompose_ms, rest += s.total_ms;
+  const CookResult result = cook(files, cook_settings(1));
+  const fs::path out = scratch / "bench.hcb";
+  const double write = best_of(runs, [&] {
+    const auto start = Clock::now();
+    write_output(result, out, cook_settings(1));
+    return ms_since(start);
+  });
+  // The cleaner alone, on each asset's regions again (cleaning clean regions does the same
+  // checks); the engine limits are the rest.
+  double clean = 0;
+  for (const CookedAsset& asset : result.assets) {
+    clean += best_of(runs, [&] {
+      std::vector<Region> regions = asset.regions;
+      const auto start = Clock::now();
+      if (!regions.empty()) clean_and_validate(std::move(regions), asset.source);
+      return ms_since(start);
+    });
+  }
+  rest = std::max(0.0, rest - clean);
+  const double after = trace + decompose + clean + rest + write;
+  std::printf("3. Stages after decoding, one thread (ms, and x the decode floor):\n");
+  std::printf("   trace (march, nesting, simplify)  %8.2f  %5.2fx\n", trace, trace / floor_ms);
+  std::printf("   decompose                         %8.2f  %5.2fx\n", decompose,
+              decompose / floor_ms);
+  std::printf("   clean (validation)                %8.2f  %5.2fx\n", clean, clean / floor_ms);
+  std::printf("   engine limits + other             %8.2f  %5.2fx\n", rest, rest / floor_ms);
+  std::printf("   write .hcb                        %8.2f  %5.2fx\n", write, write / floor_ms);
+  std::printf("   all after decoding                %8.2f  %5.2fx   (target <= 1x)\n", after,
+              after / floor_ms);
+
+  std::vector<double> one, two;
+  for (int r = 0; r < runs; ++r) {
+    for (unsigned threads : {1u, 2u}) {
+      const auto start = Clock::now();
+      cook(files, cook_settings(threads));
+      (threads == 1 ? one : two).push_back(ms_since(start));
+    }
+  }
+  std::printf(
+      "4. Whole cook in process (median of %d): 1 thread %8.2f ms, 2 threads %8.2f ms:"
+      " %.2fx faster (target >= 1.7x); 2 threads = %.2fx the decode floor (target <= 2x)\n",
+      runs, median(one), median(two), median(one) / median(two), median(two) / floor_ms);
+  for (unsigned threads : {1u, 2u}) {
+    std::vector<std::string> command{HULLCOOK_EXE, "cook"};
+    for (const fs::path& f : files) command.push_back(f.string());
+    command.insert(command.end(),
+                   {"--tau", "1", "--threads", std::to_string(threads), "-q", "-o", out.string()});
+    std::vector<double> walls;
+    double rss = 0;
+    for (int r = 0; r < runs; ++r) {
+      const ProcessRun run = run_process(command);
+      walls.push_back(run.wall_ms);
+      rss = std::max(rss, run.max_rss_mb);
+    }
+    const double output_mb = fs::file_size(out) / 1e6;
+    std::printf(
+        "   hullcook cook --threads %u as a process: %8.2f ms, peak RSS %6.1f MB;"
+        " 4x the largest decoded image (%.1f MB RGBA) + output: %.1f MB\n",
+        threads, median(walls), rss, largest_image_mb, 4 * largest_image_mb + output_mb);
+  }
+}
+
+// ---- 5. Scaling of the tracer and the cleaner with the outline's length
+// --------------------------
+
+void print_scaling(int runs, bool quick) {
+  std::printf(
+      "\n5. Tracer and cleaner against the outline's length (blobs with wavy edges and "
+      "holes, best of %d)\n",
+      runs);
+  std::printf("   %12s %12s %12s %12s %12s\n", "pixels", "vertices", "trace ms", "clean ms",
+              "ns/vertex");
+  std::vector<double> log_n, log_trace, log_clean;
+  const std::vector<int> sides =
+      quick ? std::vector<int>{100, 316, 1000} : std::vector<int>{100, 316, 1000, 3162};
+  for (int side : sides) {
+    const Rgba image = draw(side, side, [](double x, double y) { return blobs(x, y, 20, 7.5); });
+    AlphaImage alpha{side, side, {}};
+    for (std::size_t i = 3; i < image.pixels.size(); i += 4) alpha.alpha.push_back(image.pixels[i]);
+    TraceSettings settings;
+    settings.simplify = 0.25;
+    TraceResult traced;
+    const double trace = best_of(runs, [&] {
+      const auto start = Clock::now();
+      traced = trace_alpha(alpha, settings);
+      return ms_since(start);
+    });
+    const double clean = best_of(runs, [&] {
+      std::vector<Region> regions = traced.regions;
+      const auto start = Clock::now();
+      clean_and_validate(std::move(regions), "scaling");
+      return ms_since(start);
+    });
+    const double n = static_cast<double>(traced.traced_vertices);
+    std::printf("   %12lld %12.0f %12.2f %12.2f %12.1f\n", static_cast<long long>(side) * side, n,
+                trace, clean, (trace + clean) * 1e6 / n);
+    log_n.push_back(std::log(n));
+    log_trace.push_back(std::log(trace));
+    log_clean.push_back(std::log(clean));
+  }
+  auto slope = [&](const std::vector<double>& y) {
+    const double mx = std::accumulate(log_n.begin(), log_n.end(), 0.0) / log_n.size();
+    const double my = std::accumulate(y.begin(), y.end(), 0.0) / y.size();
+    double sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      sxy += (log_n[i] - mx) * (y[i] - my);
+      sxx += (log_n[i] - mx) * (log_n[i] - mx);
+    }
+    return sxy / sxx;
+  };
+  std::printf(
+      "   fitted exponent (time ~ vertices^k): trace k = %.2f, clean k = %.2f"
+      "   (target: linear, k ~ 1)\n",
+      slope(log_trace), slope(log_clean));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 5;
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
+      runs = std::max(1, std::atoi(argv[++i]));
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+  }
+  const fs::path scratch =
+      fs::temp_directory_path() / ("hullcook_bench_cook_" + std::to_string(getpid()));
+  fs::create_directories(scratch);
+  std::printf(
+      "bench_cook: whole-process and in-process figures of one run (hullcook %s); "
+      "machine load average at start: ",
+      HULLCOOK_EXE);
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) == 3) std::printf("%.2f %.2f %.2f\n", load[0], load[1], load[2]);
+  print_startup(scratch, runs);
+  std::vector<fs::path> samples;
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites")) {
+    if (is_image_file(entry.path())) samples.push_back(entry.path());
+  }
+  std::sort(samples.begin(), samples.end());
+  print_set("samples/sprites", samples, scratch, runs);
+  print_set("synthetic set", write_synthetic_set(scratch / "synthetic", quick), scratch, runs);
+  print_scaling(std::min(runs, 3), quick);
+  fs::remove_all(scratch);
+  return 0;
+}

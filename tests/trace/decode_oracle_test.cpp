@@ -1,0 +1,354 @@
+// The decoders against OpenCV 4.6's imdecode(IMREAD_UNCHANGED), which hullcook used before it read
+// images itself: on every sample sprite and on synthetic PNG, BMP and WebP files of every colour
+// type and bit depth, the alpha (with and without a colour key) and the colours must be the ones
+// OpenCV gave, so that cooked outputs do not change.
+#include "hullcook/core/error.h"
+#include "hullcook/trace/trace.h"
+#include "trace_test_util.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <csetjmp>
+#include <random>
+
+namespace hullcook {
+namespace {
+
+// OpenCV's decoding as hullcook's loader used it: 16 bits to 8 with convertTo(1/257).
+cv::Mat opencv_decode(const std::string& bytes) {
+  cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
+  cv::Mat raw = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
+  if (!raw.empty() && raw.depth() == CV_16U) {
+    cv::Mat eight;
+    raw.convertTo(eight, CV_8U, 1.0 / 257.0);
+    raw = eight;
+  }
+  return raw;
+}
+
+// The alpha the old loader computed from OpenCV's pixels.
+std::vector<std::uint8_t> opencv_alpha(const cv::Mat& mat,
+                                       std::optional<std::array<std::uint8_t, 3>> key) {
+  std::vector<std::uint8_t> alpha;
+  const int channels = mat.channels();
+  const bool has_alpha = channels == 4 || channels == 2;
+  for (int y = 0; y < mat.rows; ++y) {
+    for (int x = 0; x < mat.cols; ++x) {
+      const std::uint8_t* p = mat.ptr<std::uint8_t>(y) + static_cast<std::size_t>(x) * channels;
+      std::uint8_t a = has_alpha ? p[channels == 2 ? 1 : 3] : 255;
+      if (key) {
+        const auto& k = *key;
+        const bool keyed = channels <= 2 ? (p[0] == k[0] && p[0] == k[1] && p[0] == k[2])
+                                         : (p[2] == k[0] && p[1] == k[1] && p[0] == k[2]);
+        if (keyed) a = 0;
+      }
+      alpha.push_back(a);
+    }
+  }
+  return alpha;
+}
+
+// Checks one file: alpha without key (or the "no alpha channel" refusal), alpha with a colour key
+// taken from the image, and the RGBA colours.
+void expect_same_as_opencv(const std::string& name, const std::string& bytes) {
+  SCOPED_TRACE(name);
+  const cv::Mat reference = opencv_decode(bytes);
+  ASSERT_FALSE(reference.empty()) << "OpenCV cannot read the test file";
+  const int channels = reference.channels();
+  const bool has_alpha = channels == 4 || channels == 2;
+  if (has_alpha) {
+    AlphaImage image = decode_alpha(bytes, name, TraceSettings{});
+    EXPECT_EQ(image.width, reference.cols);
+    EXPECT_EQ(image.height, reference.rows);
+    EXPECT_TRUE(image.alpha == opencv_alpha(reference, std::nullopt));
+  } else {
+    EXPECT_THROW(decode_alpha(bytes, name, TraceSettings{}), InputError);
+  }
+  // Keys from a few pixels of the image, so that some pixels are keyed.
+  for (int k = 0; k < 3; ++k) {
+    const int x = (k * 7) % reference.cols, y = (k * 5) % reference.rows;
+    const std::uint8_t* p = reference.ptr<std::uint8_t>(y) + static_cast<std::size_t>(x) * channels;
+    const std::array<std::uint8_t, 3> key = channels <= 2
+                                                ? std::array<std::uint8_t, 3>{p[0], p[0], p[0]}
+                                                : std::array<std::uint8_t, 3>{p[2], p[1], p[0]};
+    TraceSettings keyed;
+    keyed.color_key = key;
+    EXPECT_TRUE(decode_alpha(bytes, name, keyed).alpha == opencv_alpha(reference, key)) << k;
+  }
+  // A directory per test: ctest runs the tests of this file in parallel processes.
+  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" /
+                   ("decode_oracle_" +
+                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  std::filesystem::create_directories(dir);
+  const auto path = dir / std::filesystem::path(name).filename();
+  test::write_bytes(path, bytes);
+  const RgbaImage rgba = load_rgba(path, 1ull << 40);
+  ASSERT_EQ(rgba.rgba.size(), reference.total() * 4);
+  bool same = true;
+  for (int y = 0; y < reference.rows && same; ++y) {
+    for (int x = 0; x < reference.cols && same; ++x) {
+      const std::uint8_t* p =
+          reference.ptr<std::uint8_t>(y) + static_cast<std::size_t>(x) * channels;
+      const std::uint8_t* q = rgba.rgba.data() + (static_cast<std::size_t>(y) * rgba.width + x) * 4;
+      const std::array<std::uint8_t, 4> expected =
+          channels <= 2
+              ? std::array<std::uint8_t, 4>{p[0], p[0], p[0], has_alpha ? p[1] : std::uint8_t(255)}
+              : std::array<std::uint8_t, 4>{p[2], p[1], p[0], has_alpha ? p[3] : std::uint8_t(255)};
+      same = std::equal(expected.begin(), expected.end(), q);
+      EXPECT_TRUE(same) << "first difference at " << x << ", " << y;
+    }
+  }
+}
+
+TEST(DecodeOracle, EverySampleSpriteAsOpenCV) {
+  for (const auto& path : test::all_sprites()) {
+    expect_same_as_opencv(path.filename().string(), test::read_bytes(path));
+  }
+}
+
+// ---- Synthetic PNGs through libpng's writer: every colour type, bit depth, tRNS, interlace. ----
+
+struct PngForm {
+  int colour_type;
+  int bit_depth;
+  bool transparency;
+  bool interlaced;
+};
+
+void append(png_structp png, png_bytep data, png_size_t size) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<char*>(data), size);
+}
+
+// Only libpng calls after setjmp.
+bool libpng_write(png_structp png, png_infop info, std::string& out, const PngForm& form, int width,
+                  int height, png_bytep* rows, std::vector<png_color>& palette,
+                  std::vector<png_byte>& alphas, png_color_16& colour) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, &out, append, nullptr);
+  png_set_IHDR(png, info, width, height, form.bit_depth, form.colour_type,
+               form.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (form.colour_type == PNG_COLOR_TYPE_PALETTE) {
+    png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+    if (form.transparency) {
+      png_set_tRNS(png, info, alphas.data(), static_cast<int>(alphas.size()), nullptr);
+    }
+  } else if (form.transparency) {
+    png_set_tRNS(png, info, nullptr, 0, &colour);
+  }
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, nullptr);
+  return true;
+}
+
+std::string write_png(const PngForm& form, int width, int height, std::mt19937& random) {
+  const int channels = form.colour_type == PNG_COLOR_TYPE_RGB          ? 3
+                       : form.colour_type == PNG_COLOR_TYPE_RGB_ALPHA  ? 4
+                       : form.colour_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                                                                       : 1;
+  const std::size_t row_bytes =
+      (static_cast<std::size_t>(width) * channels * form.bit_depth + 7) / 8;
+  std::vector<std::vector<png_byte>> rows(height, std::vector<png_byte>(row_bytes));
+  for (int y = 0; y < height; ++y) {
+    for (std::size_t i = 0; i < row_bytes; ++i) rows[y][i] = static_cast<png_byte>(random());
+    // Runs of equal samples, so that tRNS colours and keys repeat.
+    if (y % 3 == 1) rows[y] = rows[y - 1];
+  }
+  const int palette_size = form.bit_depth < 8 ? (1 << form.bit_depth) : 200;
+  if (form.colour_type == PNG_COLOR_TYPE_PALETTE && form.bit_depth == 8) {
+    for (auto& row : rows) {
+      for (auto& index : row) index = static_cast<png_byte>(index % palette_size);
+    }
+  }
+  std::vector<png_color> palette(palette_size);
+  std::vector<png_byte> alphas(palette_size * 3 / 4);
+  png_color_16 colour{};
+  if (form.colour_type == PNG_COLOR_TYPE_PALETTE) {
+    for (auto& c : palette) {
+      c = {static_cast<png_byte>(random()), static_cast<png_byte>(random()),
+           static_cast<png_byte>(random())};
+    }
+    palette[1] = {77, 77, 77};  // a grey entry
+    for (auto& a : alphas) a = static_cast<png_byte>(random());
+  } else if (form.transparency) {
+    // The colour of the first pixel, so that it is transparent.
+    const png_byte* p = rows[0].data();
+    auto sample = [&](int k) -> png_uint_16 {
+      if (form.bit_depth == 16) return static_cast<png_uint_16>(p[2 * k] << 8 | p[2 * k + 1]);
+      if (form.bit_depth == 8) return p[k];
+      return static_cast<png_uint_16>(p[0] >> (8 - form.bit_depth));
+    };
+    if (form.colour_type == PNG_COLOR_TYPE_GRAY) {
+      colour.gray = sample(0);
+    } else {
+      colour.red = sample(0), colour.green = sample(1), colour.blue = sample(2);
+    }
+  }
+  std::vector<png_bytep> pointers;
+  for (auto& row : rows) pointers.push_back(row.data());
+  std::string out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  const bool written =
+      libpng_write(png, info, out, form, width, height, pointers.data(), palette, alphas, colour);
+  png_destroy_write_struct(&png, &info);
+  EXPECT_TRUE(written) << "libpng could not write the test image";
+  return out;
+}
+
+TEST(DecodeOracle, EveryPngColourTypeAndBitDepthAsOpenCV) {
+  std::mt19937 random(17);
+  std::vector<PngForm> forms;
+  for (bool interlaced : {false, true}) {
+    for (int depth : {1, 2, 4, 8, 16}) {
+      forms.push_back({PNG_COLOR_TYPE_GRAY, depth, false, interlaced});
+      forms.push_back({PNG_COLOR_TYPE_GRAY, depth, true, interlaced});
+      if (depth <= 8) {
+        forms.push_back({PNG_COLOR_TYPE_PALETTE, depth, false, interlaced});
+        forms.push_back({PNG_COLOR_TYPE_PALETTE, depth, true, interlaced});
+      }
+      if (depth >= 8) {
+        forms.push_back({PNG_COLOR_TYPE_RGB, depth, false, interlaced});
+        forms.push_back({PNG_COLOR_TYPE_RGB, depth, true, interlaced});
+        forms.push_back({PNG_COLOR_TYPE_GRAY_ALPHA, depth, false, interlaced});
+        forms.push_back({PNG_COLOR_TYPE_RGB_ALPHA, depth, false, interlaced});
+      }
+    }
+  }
+  for (const PngForm& form : forms) {
+    const std::string name =
+        "type" + std::to_string(form.colour_type) + "_" + std::to_string(form.bit_depth) + "bit" +
+        (form.transparency ? "_trns" : "") + (form.interlaced ? "_adam7" : "") + ".png";
+    expect_same_as_opencv(name, write_png(form, 67, 41, random));
+  }
+}
+
+TEST(DecodeOracle, EverySixteenBitValueRoundsAsOpenCV) {
+  // 256 x 256 grey + alpha: the alpha sample takes every 16-bit value once.
+  std::vector<std::string> rows;
+  for (int y = 0; y < 256; ++y) {
+    std::string row;
+    for (int x = 0; x < 256; ++x) {
+      row += static_cast<char>(x), row += static_cast<char>(y);  // grey
+      row += static_cast<char>(y), row += static_cast<char>(x);  // alpha = y * 256 + x
+    }
+    rows.push_back(row);
+  }
+  expect_same_as_opencv("every16.png", test::encode_png(256, 256, 16, 4, rows));
+}
+
+// ---- BMP: every form OpenCV reads (32-bit alpha forms are hullcook's own, tested elsewhere). ----
+
+std::string le(std::uint32_t v, int bytes) {
+  std::string s;
+  for (int i = 0; i < bytes; ++i) s += static_cast<char>((v >> (8 * i)) & 0xFF);
+  return s;
+}
+
+// A BMP with a 40-byte info header (plus masks when given), palette and pixel data as given.
+std::string bmp(int width, int height, int bits, int compression, const std::string& palette,
+                const std::string& pixels, const std::string& masks = {}) {
+  const std::uint32_t offset = static_cast<std::uint32_t>(54 + masks.size() + palette.size());
+  return "BM" + le(offset + static_cast<std::uint32_t>(pixels.size()), 4) + le(0, 4) +
+         le(offset, 4) + le(40, 4) + le(static_cast<std::uint32_t>(width), 4) +
+         le(static_cast<std::uint32_t>(height), 4) + le(1, 2) + le(bits, 2) + le(compression, 4) +
+         le(static_cast<std::uint32_t>(pixels.size()), 4) + le(2835, 4) + le(2835, 4) +
+         le(static_cast<std::uint32_t>(palette.size() / 4), 4) + le(0, 4) + masks + palette +
+         pixels;
+}
+
+std::string random_bytes(std::mt19937& random, std::size_t count) {
+  std::string s;
+  for (std::size_t i = 0; i < count; ++i) s += static_cast<char>(random());
+  return s;
+}
+
+TEST(DecodeOracle, EveryBmpFormAsOpenCV) {
+  std::mt19937 random(23);
+  const int width = 37, height = 11;
+  auto pitch = [&](int bits) { return ((width * bits + 7) / 8 + 3) / 4 * 4; };
+  std::vector<std::pair<std::string, std::string>> files;
+  for (int bits : {1, 4, 8}) {
+    std::string colour = random_bytes(random, 4u << bits), grey;
+    for (int i = 0; i < (1 << bits); ++i) grey += std::string(3, static_cast<char>(i * 3)) + '\0';
+    const std::string data = random_bytes(random, static_cast<std::size_t>(pitch(bits)) * height);
+    files.emplace_back("palette" + std::to_string(bits) + ".bmp",
+                       bmp(width, height, bits, 0, colour, data));
+    files.emplace_back("grey" + std::to_string(bits) + ".bmp",
+                       bmp(width, -height, bits, 0, grey, data));
+  }
+  const std::string data16 = random_bytes(random, static_cast<std::size_t>(pitch(16)) * height);
+  files.emplace_back("rgb555.bmp", bmp(width, height, 16, 0, {}, data16));
+  files.emplace_back("bitfields555.bmp", bmp(width, height, 16, 3, {}, data16,
+                                             le(0x7c00, 4) + le(0x3e0, 4) + le(0x1f, 4)));
+  files.emplace_back("bitfields565.bmp", bmp(width, -height, 16, 3, {}, data16,
+                                             le(0xf800, 4) + le(0x7e0, 4) + le(0x1f, 4)));
+  files.emplace_back("rgb24.bmp",
+                     bmp(width, height, 24, 0, {},
+                         random_bytes(random, static_cast<std::size_t>(pitch(24)) * height)));
+  files.emplace_back("bitfields32_rgba_masks.bmp",
+                     bmp(width, height, 32, 3, {},
+                         random_bytes(random, static_cast<std::size_t>(pitch(32)) * height),
+                         le(0xff, 4) + le(0xff00, 4) + le(0xff0000, 4)));
+  // Run-length encoded: runs, absolute runs (odd and even), end of line, delta, end of bitmap.
+  const std::string palette = random_bytes(random, 4 * 256);
+  std::string rle8, rle4;
+  for (int y = 0; y < height - 4; ++y) {
+    rle8 += std::string("\x05", 1) + static_cast<char>(y + 1);            // run of 5
+    rle8 += std::string("\x00\x03", 2) + random_bytes(random, 3) + '\0';  // absolute, odd
+    rle8 += std::string("\x00\x04", 2) + random_bytes(random, 4);         // absolute, even
+    if (y % 3 == 0) rle8 += std::string("\x00\x02\x02\x00", 4);           // delta: 2 right
+    if (y == 4) rle8 += std::string("\x00\x02\x01\x01", 4);               // delta: down one row
+    rle8 += std::string("\x00\x00", 2);                                   // end of line
+  }
+  for (int y = 0; y < height - 2; ++y) {
+    rle4 += std::string("\x07", 1) + static_cast<char>(0x1f + y);         // run of 7 alternating
+    rle4 += std::string("\x00\x05", 2) + random_bytes(random, 3) + '\0';  // absolute, 5 pixels
+    rle4 += std::string("\x00\x00", 2);
+  }
+  rle8 += std::string("\x25\x09", 2);  // a whole row: wraps to the next
+  rle8 += std::string("\x00\x00", 2);  // end of line right after a wrap: no empty row
+  rle8 += std::string("\x03\x07", 2);
+  rle8 += std::string("\x00\x01", 2);  // end of bitmap: the rest takes palette[0]
+  rle4 += std::string("\x25\x12", 2) + std::string("\x00\x00", 2);
+  rle4 += std::string("\x03\x45", 2) + std::string("\x00\x00", 2);
+  files.emplace_back("rle8.bmp", bmp(width, height, 8, 1, palette, rle8));
+  files.emplace_back("rle4.bmp", bmp(width, height, 4, 2, palette.substr(0, 64), rle4));
+  // OS/2 header: 12 bytes, three-byte palette entries; OpenCV read these as grey.
+  const std::string os2_pixels = random_bytes(random, static_cast<std::size_t>(pitch(24)) * height);
+  files.emplace_back("os2_24.bmp", "BM" +
+                                       le(26 + static_cast<std::uint32_t>(os2_pixels.size()), 4) +
+                                       le(0, 4) + le(26, 4) + le(12, 4) + le(width, 2) +
+                                       le(height, 2) + le(1, 2) + le(24, 2) + os2_pixels);
+  const std::string os2_palette = random_bytes(random, 3 * 256);
+  const std::string os2_indices = random_bytes(random, static_cast<std::size_t>(pitch(8)) * height);
+  files.emplace_back("os2_8.bmp", "BM" + le(0, 4) + le(0, 4) + le(26 + 768, 4) + le(12, 4) +
+                                      le(width, 2) + le(height, 2) + le(1, 2) + le(8, 2) +
+                                      os2_palette + os2_indices);
+  for (const auto& [name, bytes] : files) expect_same_as_opencv(name, bytes);
+}
+
+TEST(DecodeOracle, WebpAsOpenCV) {
+  if (!cv::haveImageWriter(".webp")) GTEST_SKIP() << "OpenCV cannot write WebP here";
+  cv::Mat bgra =
+      cv::imread((test::sprites_dir() / "teeworlds__deadtee.png").string(), cv::IMREAD_UNCHANGED);
+  cv::Mat bgr;
+  cv::cvtColor(bgra, bgr, cv::COLOR_BGRA2BGR);
+  for (int quality : {101, 80}) {
+    for (const cv::Mat* image : {&bgra, &bgr}) {
+      std::vector<std::uint8_t> encoded;
+      ASSERT_TRUE(cv::imencode(".webp", *image, encoded, {cv::IMWRITE_WEBP_QUALITY, quality}));
+      expect_same_as_opencv(
+          "q" + std::to_string(quality) + "_" + std::to_string(image->channels()) + ".webp",
+          {encoded.begin(), encoded.end()});
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
