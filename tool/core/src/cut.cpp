@@ -378,8 +378,8 @@ bool is_sliver(const Ring& ring, std::size_t first, std::size_t last) {
   }
   if (count < 3) return true;
   const Vec2 extent = high - low;
-  return !(std::abs(0.5 * twice_area) >
-           kSliverAreaFraction * (extent.x * extent.x + extent.y * extent.y));
+  const double length = std::sqrt(extent.x * extent.x + extent.y * extent.y);
+  return !(std::abs(0.5 * twice_area) > sliver_width(length) * length);
 }
 
 bool is_sliver(const Ring& ring) { return ring.size() < 3 || is_sliver(ring, 0, ring.size() - 1); }

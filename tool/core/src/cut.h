@@ -39,7 +39,7 @@ std::optional<std::pair<Region, Region>> split_between_holes(
 // candidate's crossings lie within rounding of each other.
 std::optional<std::pair<Region, Region>> cut_across_slab(const Region& region, std::size_t h);
 
-// A piece whose area is below kSliverAreaFraction of its bounding box's squared diagonal is a
+// A piece whose area is below sliver_width(its bounding box's diagonal) times that diagonal is a
 // sliver: the trace of a cut through near-collinear vertices, not a shape (issue 16).
 bool is_sliver(const Ring& ring);
 // The same for the piece that the chain of ring from first to last (cyclic) closes, without

@@ -71,7 +71,9 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     throw std::invalid_argument("decompose: sd must be finite and > 0");
   }
   // Every point the decomposition orients is a vertex of the region (or one turned a quarter).
-  const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
+  const double max_abs = detail::max_abs_coordinate(region);
+  const detail::CoordinateBound coordinate_bound(max_abs);
+  const detail::SliverFloor sliver_floor(region.outer, max_abs);
   DecompositionTree tree;
   tree.tau_ = settings.tau;
   tree.measure_ = settings.measure;

@@ -19,15 +19,17 @@ struct VertexRef {
   std::size_t index;
 };
 
-// A cut a-b grazes a vertex that lies within the sliver distance of the open segment,
-// 2 kSliverAreaFraction |ab| (see is_sliver in cut.h): cut there, it would leave that vertex on a
+// A cut a-b grazes a vertex that lies within twice the sliver width of the open segment,
+// 2 sliver_width(|ab|) (see is_sliver in cut.h): cut there, it would leave that vertex on a
 // spike of next to no area (near-collinear vertices of different rings, issue 16).
 struct Graze {
   Graze(Vec2 from, Vec2 to) : a(from), b(to), along(to - from) {
     squared = along.x * along.x + along.y * along.y;
-    grazing = 2.0 * kSliverAreaFraction * squared;
+    const double span = std::sqrt(squared);
+    const double width = 2.0 * sliver_width(span);
+    grazing = width * span;
     // The segment's box, widened so that it holds the vertices that graze it.
-    const double reach = 2.0 * kSliverAreaFraction * (std::abs(along.x) + std::abs(along.y));
+    const double reach = width;
     min_x = std::min(a.x, b.x) - reach, max_x = std::max(a.x, b.x) + reach;
     min_y = std::min(a.y, b.y) - reach, max_y = std::max(a.y, b.y) + reach;
   }

@@ -205,7 +205,7 @@ class SlabCutter {
   bool clear_at(double y, Vec2 a, Vec2 b, Vec2 c, Vec2 d) const {
     const Vec2 from = vertex_at_height(a, b, y), to = vertex_at_height(c, d, y);
     const Graze cut(from, to);
-    const double apart = 2.0 * kSliverAreaFraction * (to.x - from.x);
+    const double apart = 2.0 * sliver_width(to.x - from.x);
     auto clear_of_ends = [&](Vec2 end, Vec2 p, Vec2 q) {
       return end == p || end == q || (distance(end, p) > apart && distance(end, q) > apart);
     };
