@@ -1,7 +1,11 @@
 // hullcook: the command line. Parsing and exit codes only; the work is in hullcook::cook.
 #include "commands.h"
 
+#include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
+
+#include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <exception>
@@ -16,6 +20,23 @@ namespace {
 std::vector<std::pair<int, AddCommand>>& registered_commands() {
   static std::vector<std::pair<int, AddCommand>> commands;
   return commands;
+}
+
+// SIGINT (Ctrl-C), SIGTERM and SIGHUP stop a command at once, leaving no temporary file: the
+// outputs are either the old files or the new ones. Exit 128 + the signal's number (130 for
+// SIGINT), as a shell reports it.
+extern "C" void stop_on_signal(int signal_number) {
+  remove_pending_temporaries();
+  static const char message[] = "hullcook: interrupted\n";
+  [[maybe_unused]] const ssize_t written = ::write(2, message, sizeof message - 1);
+  ::_exit(128 + signal_number);
+}
+
+void install_signal_handlers() {
+  struct sigaction action {};
+  action.sa_handler = stop_on_signal;
+  sigemptyset(&action.sa_mask);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
 }
 
 }  // namespace
@@ -60,6 +81,7 @@ int main(int argc, char** argv) {
     std::cout << app.help();
     return app.get_subcommands().empty() && argc > 1 ? static_cast<int>(ExitCode::usage) : 0;
   }
+  cli::install_signal_handlers();
   try {
     return action();
   } catch (const Error& e) {

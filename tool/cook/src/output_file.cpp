@@ -2,9 +2,16 @@
 
 #include "hullcook/core/error.h"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <system_error>
@@ -12,15 +19,76 @@
 namespace hullcook {
 namespace {
 
+// The temporaries being written or awaiting their rename, for remove_pending_temporaries: a slot
+// holds a name (malloc'ed, so that a signal handler reads a plain C string) or null.
+constexpr std::size_t kPendingSlots = 64;
+std::array<std::atomic<char*>, kPendingSlots> pending_temporaries{};
+
+// A registered temporary name; unregistered (and freed) when it goes out of scope.
+class PendingTemporary {
+ public:
+  explicit PendingTemporary(const std::filesystem::path& path) {
+    name_ = strdup(path.c_str());
+    for (std::atomic<char*>& slot : pending_temporaries) {
+      char* empty = nullptr;
+      if (name_ && slot.compare_exchange_strong(empty, name_)) {
+        slot_ = &slot;
+        break;
+      }
+    }
+  }
+  ~PendingTemporary() {
+    if (slot_) slot_->store(nullptr);
+    std::free(name_);
+  }
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+ private:
+  char* name_ = nullptr;
+  std::atomic<char*>* slot_ = nullptr;
+};
+
+// The prefix of path's temporaries: ".NAME.tmp".
+std::string temporary_prefix(const std::filesystem::path& path) {
+  return "." + path.filename().string() + ".tmp";
+}
+
+// Removes the temporaries of path that a killed process left: their names are
+// ".NAME.tmpPID-RANDOM", and PID no longer runs. Those of a live process (another cook writing
+// the same output) are kept.
+void remove_stale_temporaries(const std::filesystem::path& directory,
+                              const std::filesystem::path& path) {
+  const std::string prefix = temporary_prefix(path);
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const char* digits = name.c_str() + prefix.size();
+    char* stop = nullptr;
+    const long pid = std::strtol(digits, &stop, 10);
+    if (stop == digits || *stop != '-' || pid <= 0) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH) {
+      std::filesystem::remove(it->path(), error);
+      error.clear();
+    }
+  }
+}
+
 // Writes bytes to a new temporary file beside path (same directory, so that the rename is
 // atomic) and returns its name. Throws OutputError naming path; on failure nothing is left.
-std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes) {
+std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes,
+                                      std::vector<std::unique_ptr<PendingTemporary>>& pending) {
   check_directory_of(path);
   std::filesystem::path directory = path.parent_path();
   if (directory.empty()) directory = ".";
+  remove_stale_temporaries(directory, path);
   std::random_device entropy;
   std::filesystem::path temporary =
-      directory / ("." + path.filename().string() + ".tmp" + std::to_string(entropy()));
+      directory / (temporary_prefix(path) + std::to_string(::getpid()) + "-" +
+                   std::to_string(entropy()));
+  pending.push_back(std::make_unique<PendingTemporary>(temporary));
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) {
     throw OutputError(path.string() + ": cannot write: " + std::strerror(errno));
@@ -36,6 +104,12 @@ std::filesystem::path write_temporary(const std::filesystem::path& path, std::st
 }
 
 }  // namespace
+
+void remove_pending_temporaries() noexcept {
+  for (std::atomic<char*>& slot : pending_temporaries) {
+    if (const char* name = slot.load()) ::unlink(name);
+  }
+}
 
 void check_directory_of(const std::filesystem::path& path) {
   std::filesystem::path directory = path.parent_path();
@@ -54,11 +128,14 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 void write_files_atomically(
     const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
   std::vector<std::filesystem::path> temporaries;
+  std::vector<std::unique_ptr<PendingTemporary>> pending;  // until renamed or removed
   auto remove_temporaries = [&](std::size_t from) {
     for (std::size_t k = from; k < temporaries.size(); ++k) std::remove(temporaries[k].c_str());
   };
   try {
-    for (const auto& [path, bytes] : files) temporaries.push_back(write_temporary(path, bytes));
+    for (const auto& [path, bytes] : files) {
+      temporaries.push_back(write_temporary(path, bytes, pending));
+    }
   } catch (...) {
     remove_temporaries(0);
     throw;

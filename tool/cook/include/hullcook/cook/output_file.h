@@ -22,6 +22,12 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 void write_files_atomically(
     const std::vector<std::pair<std::filesystem::path, std::string>>& files);
 
+// Removes the temporary files of the writes under way, from a signal handler (async-signal-safe:
+// it only unlinks the names registered when each temporary was created). A process stopped by
+// SIGINT or SIGTERM leaves none; one killed outright (SIGKILL) leaves its temporaries, which the
+// next write of the same output removes once their process is gone (their names carry its pid).
+void remove_pending_temporaries() noexcept;
+
 // Throws UsageError naming both if output is an existing file among inputs (the same file by
 // any path or link): a command never overwrites what it reads.
 void check_not_an_input(const std::filesystem::path& output,
