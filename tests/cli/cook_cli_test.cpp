@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -271,6 +272,33 @@ TEST_F(CookCli, ReviewAPolygonWithTooManyHolesIsRefusedByDecomposeToo) {
 TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
   // Cooked to a NaN area, the triangle was left out with a warning and the cook succeeded.
   expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");
+}
+
+// Issue 19: the same inputs give the same bytes from any working directory, by a relative or an
+// absolute path.
+TEST_F(CookCli, Issue19_OutputDoesNotDependOnTheWorkingDirectory) {
+  const fs::path sprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+  fs::create_directories(directory / "project/art");
+  for (const char* name :
+       {"pingus__groundpieces__ground__foliage__oak1.png", "teeworlds__mapres__grass_main.png"}) {
+    fs::copy_file(sprites / name, directory / "project/art" / name);
+  }
+  for (const char* extension : {".hcb", ".glb"}) {
+    const std::string relative = "cd " + (directory / "project").string() + " && " + HULLCOOK_EXE +
+                                 " cook art -q -o relative" + extension;
+    ASSERT_EQ(std::system(relative.c_str()), 0);
+    auto absolute = run_hullcook("cook " + (directory / "project/art").string() + " -q -o " +
+                                 (directory / (std::string("absolute") + extension)).string());
+    ASSERT_EQ(absolute.exit_code, 0) << absolute.output;
+    std::ifstream a(directory / "project" / (std::string("relative") + extension),
+                    std::ios::binary),
+        b(directory / (std::string("absolute") + extension), std::ios::binary);
+    const std::string first{std::istreambuf_iterator<char>(a), {}};
+    const std::string second{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_FALSE(first.empty());
+    EXPECT_TRUE(first == second) << extension << ": " << first.size() << " and " << second.size()
+                                 << " bytes differ";
+  }
 }
 
 }  // namespace

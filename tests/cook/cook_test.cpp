@@ -155,6 +155,23 @@ TEST(Cook, OutputDoesNotDependOnThreadCount) {
   EXPECT_EQ(debug_json(without_timings(first.assets)), debug_json(without_timings(second.assets)));
 }
 
+// Issue 19: the bundle's assets are in name order, so that the order of the command line does not
+// change a byte.
+TEST(Cook, Issue19_OutputDoesNotDependOnTheOrderOfTheInputs) {
+  const std::vector<std::filesystem::path> sorted{
+      kSprites / "pingus__groundpieces__ground__foliage__oak1.png",
+      kSprites / "teeworlds__mapres__grass_main.png"};
+  const std::vector<std::filesystem::path> reversed(sorted.rbegin(), sorted.rend());
+  Settings settings;
+  settings.threads = 1;
+  const CookResult first = cook(sorted, settings), second = cook(reversed, settings);
+  ASSERT_EQ(second.assets.size(), 2u);
+  EXPECT_EQ(second.assets[0].name, "pingus__groundpieces__ground__foliage__oak1.png");
+  EXPECT_EQ(write_bundle(first.assets), write_bundle(second.assets));
+  EXPECT_EQ(write_gltf(first.assets, GltfOptions{true, false}),
+            write_gltf(second.assets, GltfOptions{true, false}));
+}
+
 // One sheet alone is split by region among the threads: the output is the same.
 TEST(Cook, OneSheetDoesNotDependOnThreadCount) {
   Settings one;

@@ -44,8 +44,7 @@ struct InputFile {
 
 bool is_poly_file(const std::filesystem::path& path) { return path.extension() == ".poly"; }
 
-// Expands directories (recursively, in sorted order) into image files; files
-// are taken as given.
+// Expands directories (recursively) into image files; files are taken as given. In name order.
 std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs) {
   std::vector<InputFile> files;
   for (const std::filesystem::path& input : inputs) {
@@ -84,6 +83,10 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
                        "'; cook them separately or from a common directory");
     }
   }
+  // Assets in name order, whatever the order of the command line (issue 19: the same inputs give
+  // the same bytes).
+  std::sort(files.begin(), files.end(),
+            [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
   return files;
 }
 

@@ -170,7 +170,8 @@ json asset_extras(const CookedAsset& asset, double half_thickness) {
   json extras = {
       {"version", 1},
       {"units", "output units (1 unit = 1 m in glTF)"},
-      {"source", asset.source},
+      // The name, not the path given: the bytes must not depend on where the cook ran (issue 19).
+      {"source", asset.name},
       {"image_size", json::array({asset.image_width, asset.image_height})},
       {"pixels_per_unit", asset.pixels_per_unit},
       {"pivot", vec2_json(asset.pivot)},
