@@ -172,6 +172,24 @@ TEST(Cook, Issue19_OutputDoesNotDependOnTheOrderOfTheInputs) {
             write_gltf(second.assets, GltfOptions{true, false}));
 }
 
+// Issue 19: without the debug JSON a cook frees each asset's outlines once checked; the bundle
+// and glTF bytes are the same.
+TEST(Cook, Issue19_OutlinesFreedGiveTheSameBundle) {
+  Settings kept;
+  kept.threads = 2;
+  Settings freed = kept;
+  freed.keep_outlines = false;
+  const CookResult first = cook({kSprites}, kept), second = cook({kSprites}, freed);
+  ASSERT_EQ(first.assets.size(), second.assets.size());
+  for (const CookedAsset& asset : second.assets) {
+    EXPECT_TRUE(asset.regions.empty() && asset.pieces.empty()) << asset.name;
+    EXPECT_FALSE(asset.levels.empty()) << asset.name;
+  }
+  EXPECT_EQ(write_bundle(first.assets), write_bundle(second.assets));
+  EXPECT_EQ(write_gltf(first.assets, GltfOptions{true, false}),
+            write_gltf(second.assets, GltfOptions{true, false}));
+}
+
 // One sheet alone is split by region among the threads: the output is the same.
 TEST(Cook, OneSheetDoesNotDependOnThreadCount) {
   Settings one;

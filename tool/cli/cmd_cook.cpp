@@ -88,6 +88,11 @@ void add_cook(CLI::App& root, CommandAction& action) {
       }
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
+      // Only the debug JSON reads the outlines: without it they are freed asset by asset.
+      command->settings.keep_outlines = false;
+      for (const std::filesystem::path& output : outputs) {
+        if (output.extension() == ".json") command->settings.keep_outlines = true;
+      }
       CookResult result = cook(inputs, command->settings);
       write_outputs(result, outputs, command->settings);
       if (!command->quiet) print_summary(result);

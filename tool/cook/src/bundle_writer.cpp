@@ -259,17 +259,20 @@ std::vector<std::uint32_t> name_table(const std::vector<CookedAsset>& assets) {
 
 std::string write_bundle(const std::vector<CookedAsset>& assets) {
   std::set<std::string_view> names;
-  std::vector<std::vector<CookedLevel>> asset_levels;
+  std::vector<std::vector<float>> level_taus;  // per asset: its levels' τ
   std::vector<QuantizedAsset> quantized;
   bool any_physics = false;
   std::size_t level_count = 0, hull_count = 0, vertex_count = 0, strings_size = 0;
   for (const CookedAsset& asset : assets) {
     if (!names.insert(asset.name).second) fail(asset, "two assets have this name");
-    std::vector<CookedLevel> levels = asset.levels;
-    if (levels.empty()) levels.push_back({asset.tau, {}});
+    // An asset without levels is stored with one empty level at its τ. The levels are read in
+    // place, not copied: a cook's memory at scale is mostly its hulls.
+    const std::vector<CookedLevel> no_levels{{asset.tau, {}}};
+    const std::vector<CookedLevel>& levels = asset.levels.empty() ? no_levels : asset.levels;
     check_asset(asset, levels);
     quantized.push_back(quantize_asset(asset, levels));
-    asset_levels.push_back(std::move(levels));
+    std::vector<float>& taus = level_taus.emplace_back();
+    for (const CookedLevel& level : levels) taus.push_back(static_cast<float>(level.tau));
     any_physics = any_physics || asset.physics.has_value();
     level_count += quantized.back().levels.size();
     for (const auto& level : quantized.back().levels) {
@@ -337,7 +340,7 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
     }
 
     for (std::size_t l = 0; l < quantized[i].levels.size(); ++l) {
-      const LevelRecord level{static_cast<float>(asset_levels[i][l].tau), hull_index};
+      const LevelRecord level{level_taus[i][l], hull_index};
       put(bytes, header.levels_offset + std::size_t{level_index++} * sizeof(LevelRecord), level);
       for (const QuantizedHull& hull : quantized[i].levels[l]) {
         HullRecord hull_record = hull.record;

@@ -522,6 +522,11 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
       const std::size_t i = order[k];
       try {
         result.assets[i] = cook_one(files[i], settings, per_asset);
+        if (!settings.keep_outlines) {
+          // Checked already: only the hulls go on to the writers.
+          std::vector<Region>().swap(result.assets[i].regions);
+          std::vector<CookedPiece>().swap(result.assets[i].pieces);
+        }
       } catch (const std::logic_error& e) {
         // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
         // violation, with the asset.

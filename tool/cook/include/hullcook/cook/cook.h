@@ -57,6 +57,10 @@ struct Settings {
   std::optional<PhysicsProperties> physics;
   bool draco = false;
   unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
+  // Keep each asset's regions and pieces (with their components) in the result: the debug JSON
+  // needs them, the bundle and glTF writers only the levels' hulls. Without them a cook's memory
+  // grows with its hulls alone (issue 19: 10,000 assets in the memory of 100).
+  bool keep_outlines = true;
 };
 
 // Box2D 2.4's b2_linearSlop [m]: with 1 unit = 1 m, b2PolygonShape::Set welds vertices closer
@@ -64,7 +68,7 @@ struct Settings {
 inline constexpr double kDefaultWeld = 0.005;
 
 struct CookResult {
-  std::vector<CookedAsset> assets;  // in input order; directories expand in sorted order
+  std::vector<CookedAsset> assets;  // in name order, whatever the order of the inputs
 };
 
 // Cooks images (files or directories, recursing over images) and .poly files.
