@@ -395,8 +395,11 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
   std::vector<CookedStats> best;
   for (int r = 0; r < runs; ++r) {
     CookResult result = cook(files, cook_settings(1));
-    if (best.empty())
-      best.resize(result.assets.size(), CookedStats{0, 0, 0, 1, 1e300, 1e300, 1e300, 1e300});
+    if (best.empty()) {
+      CookedStats none;
+      none.decode_ms = none.trace_ms = none.decompose_ms = none.total_ms = 1e300;
+      best.resize(result.assets.size(), none);
+    }
     for (std::size_t i = 0; i < result.assets.size(); ++i) {
       const CookedStats& s = result.assets[i].stats;
       best[i].decode_ms = std::min(best[i].decode_ms, s.decode_ms);
