@@ -81,6 +81,11 @@ class Reader {
     png_set_read_fn(png_, &input_, read_input);
     // check_png_chunks() verified every checksum.
     png_set_crc_action(png_, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+#ifdef PNG_IGNORE_ADLER32
+    // The image data's Adler-32 guards bytes the chunks' CRC-32 has just verified: computing it
+    // was a quarter of decoding (82 of 318 M instructions on samples/sprites).
+    png_set_option(png_, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
+#endif
   }
   ~Reader() { png_destroy_read_struct(&png_, &info_, nullptr); }
   Reader(const Reader&) = delete;
