@@ -267,27 +267,37 @@ void check_component_in_hull(const Region& component, const HullLines& lines, do
 // names the violation.
 class HullReach {
  public:
-  HullReach(const OutlineDistance& outline, double limit) : outline_(outline), limit_(limit) {}
+  // The outline's distance index is built on the first hull point measured: most hulls are
+  // proven by their pockets alone.
+  HullReach(const std::vector<Region>& outline, double limit) : limit_(limit) {
+    for (const Region& region : outline) regions_.push_back(&region);
+  }
 
-  void vertex(Vec2 p, Worst& beyond) const {
-    const double distance = outline_.distance(p, limit_);
+  void vertex(Vec2 p, Worst& beyond) {
+    const double distance = outline().distance(p, limit_);
     if (distance > limit_) beyond.offer(distance, p);
   }
 
-  void edge(Vec2 a, Vec2 b, Worst& beyond) const {
-    if (outline_.segment_within(a, b, limit_)) return;
+  void edge(Vec2 a, Vec2 b, Worst& beyond) {
+    if (outline().segment_within(a, b, limit_)) return;
     constexpr int kSamples = 256;
     Worst farthest;
     for (int k = 1; k < kSamples; ++k) {
       const Vec2 p = a + (b - a) * (double(k) / kSamples);
-      farthest.offer(outline_.distance(p, std::numeric_limits<double>::infinity()), p);
+      farthest.offer(outline().distance(p, std::numeric_limits<double>::infinity()), p);
     }
     // Between two samples, when the sampling missed it: at least the limit.
     beyond.offer(std::max(farthest.value, limit_), farthest.where);
   }
 
  private:
-  const OutlineDistance& outline_;
+  const OutlineDistance& outline() {
+    if (!outline_) outline_.emplace(regions_);
+    return *outline_;
+  }
+
+  std::vector<const Region*> regions_;
+  std::optional<OutlineDistance> outline_;
   double limit_;
 };
 
@@ -470,6 +480,19 @@ std::optional<std::string> partition_defect(const std::vector<CookedPiece>& piec
          whose;
 }
 
+// The largest distance of ring's vertices from first to last (cyclic) from the line through
+// ring[first] and ring[last].
+double pocket_depth(const Ring& ring, std::size_t first, std::size_t last) {
+  const Vec2 a = ring[first], along = ring[last] - a;
+  const double length = glm::length(along);
+  if (!(length > 0.0)) return std::numeric_limits<double>::infinity();
+  double depth = 0.0;
+  for (std::size_t i = first; i != last; i = i + 1 == ring.size() ? 0 : i + 1) {
+    depth = std::max(depth, std::abs(cross(along, ring[i] - a)));
+  }
+  return depth / length;
+}
+
 }  // namespace
 
 std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
@@ -496,10 +519,7 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   if (partition_problem) violations.push_back(*partition_problem);
   const bool partitioned = violations.empty();
 
-  std::vector<const Region*> regions;
-  for (const Region& region : outline) regions.push_back(&region);
-  const OutlineDistance outline_distance(regions);
-  const HullReach hull_reach(outline_distance, limit);
+  HullReach hull_reach(outline, limit);
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const CookedPiece& piece = pieces[k];
     const std::string name = "piece " + std::to_string(k + 1) + ": ";
@@ -533,24 +553,43 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 
     // A hull vertex that is a vertex of its component lies in the outline when the components
     // partition it (else that is reported already): only the others are measured.
+    // The others are measured first against the component alone (in the outline when the
+    // components partition it; a grown hull mostly stays near its own piece), then against the
+    // whole outline.
     Worst beyond;
     const Ring& hull = piece.hull;
     const std::vector<std::size_t> in_ring = hull_vertices_in_ring(hull, piece.component.outer);
     const std::size_t ring_size = piece.component.outer.size();
+    std::optional<OutlineDistance> own;
+    auto near_own = [&]() -> const OutlineDistance* {
+      if (!partitioned) return nullptr;
+      if (!own) own.emplace(std::vector<const Region*>{&piece.component});
+      return &*own;
+    };
     for (std::size_t i = 0; i < hull.size(); ++i) {
-      if (!(in_ring[i] < ring_size && partitioned)) hull_reach.vertex(hull[i], beyond);
+      if (in_ring[i] < ring_size && partitioned) continue;
+      const OutlineDistance* component = near_own();
+      if (component && component->distance(hull[i], limit) <= limit) continue;
+      hull_reach.vertex(hull[i], beyond);
     }
     if (beyond.found()) {
       report("its hull's vertex " + point(beyond.where) + " lies " + number(beyond.value) +
              " beyond the outline" + tau);
       continue;
     }
-    // A hull edge that is an edge of the component lies in the outline likewise.
+    // A hull edge that is an edge of the component lies in the outline likewise, and one that
+    // bridges a pocket of the component's ring within the limit: the perpendicular through any
+    // point of the edge crosses the chain from one end to the other (it separates them), at a
+    // point of the outline no farther than the chain's farthest vertex from the edge's line.
     for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
       const std::size_t from = in_ring[i], to = in_ring[(i + 1) % n];
       const bool on_component = partitioned && from < ring_size && to < ring_size &&
-                                (from + 1 == ring_size ? 0 : from + 1) == to;
-      if (!on_component) hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
+                                ((from + 1 == ring_size ? 0 : from + 1) == to ||
+                                 pocket_depth(piece.component.outer, from, to) <= limit);
+      if (on_component) continue;
+      const OutlineDistance* component = near_own();
+      if (component && component->segment_within(hull[i], hull[(i + 1) % n], limit)) continue;
+      hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
     }
     if (beyond.found()) {
       report("its hull's point " + point(beyond.where) + " lies " + number(beyond.value) +
