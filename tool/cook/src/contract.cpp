@@ -49,10 +49,42 @@ double rounding_slack(const std::vector<Region>& outline) {
 // --- The components: valid regions, no slivers. --------------------------------------------
 
 // Sets cleaned to the component without repeated or collinear vertices (what is measured).
-std::optional<std::string> component_defect(const Region& component, double slack,
+// Whether ring is a strictly convex counter-clockwise polygon: every turn strictly left (exact
+// predicate) and the edges' directions turning once round, so that x and y each change their
+// direction at most twice. Such a ring is simple, and its concavity 0 under every measure.
+bool is_strictly_convex_ccw(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  int x_changes = 0, y_changes = 0, last_x = 0, last_y = 0, first_x = 0, first_y = 0;
+  auto note = [](double delta, int& last, int& first, int& changes) {
+    const int sign = (delta > 0) - (delta < 0);
+    if (sign == 0) return;
+    if (last != 0 && sign != last) ++changes;
+    if (first == 0) first = sign;
+    last = sign;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    if (orientation(a, b, c) <= 0) return false;
+    note(b.x - a.x, last_x, first_x, x_changes);
+    note(b.y - a.y, last_y, first_y, y_changes);
+  }
+  // The change from the last edge back to the first.
+  if (last_x != 0 && first_x != last_x) ++x_changes;
+  if (last_y != 0 && first_y != last_y) ++y_changes;
+  return x_changes <= 2 && y_changes <= 2;
+}
+
+// convex: the component has no hole and is_strictly_convex_ccw.
+std::optional<std::string> component_defect(const Region& component, bool convex, double slack,
                                             Region& cleaned) {
   try {
-    cleaned = std::move(clean_and_validate({component}, "").front());
+    // A convex piece (most of them) is valid by that test; the others are validated whole.
+    if (convex) {
+      cleaned = component;
+    } else {
+      cleaned = std::move(clean_and_validate({component}, "").front());
+    }
   } catch (const InputError& error) {
     // "': region 1 outer boundary: self-intersection ..." names the component's own rings.
     std::string problem = error.what();
@@ -525,13 +557,15 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
     const std::string name = "piece " + std::to_string(k + 1) + ": ";
     auto report = [&](const std::string& problem) { violations.push_back(name + problem); };
     Region cleaned;
+    const bool convex =
+        piece.component.holes.empty() && is_strictly_convex_ccw(piece.component.outer);
     const std::optional<std::string> component_problem =
-        component_defect(piece.component, slack, cleaned);
+        component_defect(piece.component, convex, slack, cleaned);
     if (component_problem) report(*component_problem);
     const std::optional<HullDefect> hull_problem = hull_defect(piece.hull, terms.limits);
     if (hull_problem) report(hull_problem->problem);
 
-    if (!component_problem) {
+    if (!component_problem && !convex) {
       const double concavity = measure_concavity(cleaned, terms.measure, terms.tau);
       if (concavity > limit) {
         report("its concavity, measured afresh under " + std::string(measure_name(terms.measure)) +
