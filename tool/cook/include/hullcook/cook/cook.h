@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hullcook {
@@ -87,7 +88,14 @@ std::filesystem::path physics_sidecar(const std::filesystem::path& input);
 // The files a cook read: every asset's source, and its physics sidecar where there is one.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
 
-// Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json).
+// The bytes of every output path, by extension (.hcb, .gltf, .glb, .json, or .hcf, a fragment:
+// see fragment.h), ready for write_files_atomically. Throws UsageError for an unknown extension
+// or a path that is one of inputs.
+std::vector<std::pair<std::filesystem::path, std::string>> output_files(
+    const CookResult& result, const std::vector<std::filesystem::path>& paths,
+    const Settings& settings, const std::vector<std::filesystem::path>& inputs);
+
+// Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json, .hcf).
 // Writes to a temporary file and renames it; throws OutputError, or UsageError for an unknown
 // extension or a path that is one of files_read(result).
 void write_output(const CookResult& result, const std::filesystem::path& path,

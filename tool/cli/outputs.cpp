@@ -1,0 +1,31 @@
+#include "outputs.h"
+
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/error.h"
+
+namespace hullcook::cli {
+
+std::vector<std::filesystem::path> checked_outputs(const std::string& command,
+                                                   const std::string& output,
+                                                   const std::string& json) {
+  if (output.empty() && json.empty()) {
+    throw UsageError(command + ": give an output with -o OUT.hcb|.gltf|.glb|.json or --json OUT");
+  }
+  std::vector<std::filesystem::path> outputs;
+  if (!output.empty()) outputs.emplace_back(output);
+  if (!json.empty()) {
+    if (std::filesystem::path(json).extension() != ".json") {
+      throw UsageError("--json " + json + ": the debug JSON is written as .json");
+    }
+    outputs.emplace_back(json);
+  }
+  for (const std::filesystem::path& path : outputs) check_output_path(path);
+  std::error_code error;
+  if (outputs.size() == 2 && std::filesystem::weakly_canonical(outputs[0], error) ==
+                                 std::filesystem::weakly_canonical(outputs[1], error)) {
+    throw UsageError("-o and --json name the same file: " + json);
+  }
+  return outputs;
+}
+
+}  // namespace hullcook::cli
