@@ -4,6 +4,7 @@
 #include "outputs.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/depfile.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
@@ -19,6 +20,7 @@ struct CookCommand {
   std::string output;
   std::string json;
   std::string name;
+  std::string depfile;
   bool quiet = false;
   Settings settings;
   CookOptions options;
@@ -77,6 +79,9 @@ void add_cook(CLI::App& root, CommandAction& action) {
   app->add_option("--name", command->name,
                   "The asset's name (default: its file name); with one input file, as when "
                   "cooking fragments one by one from a folder");
+  app->add_option("--depfile", command->depfile,
+                  "Also write a Make/Ninja depfile here: the outputs depend on every file read "
+                  "(images, physics sidecars) and directory searched");
   app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
   app->add_flag("-q,--quiet", command->quiet,
                 "Print no per-asset table (warnings still go to stderr)");
@@ -89,9 +94,15 @@ void add_cook(CLI::App& root, CommandAction& action) {
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
       if (!command->name.empty() || app->count("--name") > 0) check_asset_name(*command, inputs);
+      if (!command->depfile.empty()) check_depfile(command->depfile, outputs, inputs);
       CookResult result = cook(inputs, command->settings);
       if (!command->name.empty()) result.assets.front().name = command->name;
-      write_outputs(result, outputs, command->settings);
+      auto files = output_files(result, outputs, command->settings, files_read(result));
+      if (!command->depfile.empty()) {
+        files.emplace_back(command->depfile,
+                           depfile_text(outputs, cook_dependencies(result, inputs)));
+      }
+      write_files_atomically(files);
       if (!command->quiet) print_summary(result);
       print_warnings(result);
       return 0;

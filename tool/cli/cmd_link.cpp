@@ -3,6 +3,7 @@
 #include "outputs.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/depfile.h"
 #include "hullcook/cook/fragment.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
@@ -19,6 +20,7 @@ struct LinkCommand {
   std::vector<std::string> fragments;
   std::string output;
   std::string json;
+  std::string depfile;
   bool draco = false;
   bool quiet = false;
 };
@@ -56,6 +58,8 @@ void add_link(CLI::App& root, CommandAction& action) {
   app->add_option("-o,--output", command->output,
                   "Output file; the writer is picked by extension: .hcb, .gltf, .glb, .json");
   app->add_option("--json", command->json, "Also write the debug JSON here");
+  app->add_option("--depfile", command->depfile,
+                  "Also write a Make/Ninja depfile here: the outputs depend on the fragments");
   app->add_flag("--draco", command->draco, "Compress glTF meshes with Draco");
   app->add_flag("-q,--quiet", command->quiet, "Print nothing on success");
   app->callback([command, &action] {
@@ -71,10 +75,15 @@ void add_link(CLI::App& root, CommandAction& action) {
       const std::vector<std::filesystem::path> fragments(command->fragments.begin(),
                                                          command->fragments.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, fragments);
+      if (!command->depfile.empty()) check_depfile(command->depfile, outputs, fragments);
       const CookResult result = link_fragments(fragments);
       Settings settings;
       settings.draco = command->draco;
-      write_files_atomically(output_files(result, outputs, settings, fragments));
+      auto files = output_files(result, outputs, settings, fragments);
+      if (!command->depfile.empty()) {
+        files.emplace_back(command->depfile, depfile_text(outputs, fragments));
+      }
+      write_files_atomically(files);
       if (!command->quiet) {
         std::printf("linked %zu assets from %zu fragments into %s\n", result.assets.size(),
                     fragments.size(), outputs.front().string().c_str());

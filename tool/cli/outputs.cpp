@@ -1,6 +1,7 @@
 #include "outputs.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
 namespace hullcook::cli {
@@ -26,6 +27,23 @@ std::vector<std::filesystem::path> checked_outputs(const std::string& command,
     throw UsageError("-o and --json name the same file: " + json);
   }
   return outputs;
+}
+
+void check_depfile(const std::filesystem::path& depfile,
+                   const std::vector<std::filesystem::path>& outputs,
+                   const std::vector<std::filesystem::path>& inputs) {
+  std::error_code error;
+  if (std::filesystem::is_directory(depfile, error)) {
+    throw OutputError(depfile.string() + ": cannot write: it is a directory");
+  }
+  check_directory_of(depfile);
+  for (const std::filesystem::path& output : outputs) {
+    if (std::filesystem::weakly_canonical(output, error) ==
+        std::filesystem::weakly_canonical(depfile, error)) {
+      throw UsageError("--depfile " + depfile.string() + " names an output");
+    }
+  }
+  check_not_an_input(depfile, inputs);
 }
 
 }  // namespace hullcook::cli

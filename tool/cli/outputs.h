@@ -15,4 +15,9 @@ std::vector<std::filesystem::path> checked_outputs(const std::string& command,
                                                    const std::string& output,
                                                    const std::string& json);
 
+// Refuses before any work a --depfile that cannot be written, or that names an output or an input.
+void check_depfile(const std::filesystem::path& depfile,
+                   const std::vector<std::filesystem::path>& outputs,
+                   const std::vector<std::filesystem::path>& inputs);
+
 }  // namespace hullcook::cli
