@@ -1,6 +1,7 @@
 // --depfile: cook and link list every file their outputs depend on, in a syntax Make and Ninja
 // read, written with the outputs or not at all.
 #include "run_command.h"
+#include "test_directory.h"
 
 #include "hullcook/core/error.h"
 
@@ -18,15 +19,11 @@ namespace hullcook {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_bytes;
 using test::run_hullcook;
 
 const fs::path kSprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
 const char* const kSmall = "frozen-bubble__balls__stick_effect_2.png";
-
-std::string read_text(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-}
 
 // The targets and the dependencies of a depfile, unescaped as Make reads them.
 struct Rule {
@@ -63,23 +60,18 @@ Rule parse_depfile(const std::string& text) {
   return rule;
 }
 
-class DepfileCli : public ::testing::Test {
+class DepfileCli : public test::TestDirectory {
  protected:
+  DepfileCli() : TestDirectory("hullcook depfile cli ") {}
   void SetUp() override {
-    directory = fs::temp_directory_path() /
-                ("hullcook depfile cli " +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory);
+    TestDirectory::SetUp();
     fs::create_directories(directory / "sprites/with space");
     fs::copy_file(kSprites / kSmall, directory / "sprites/a#1.png");
     fs::copy_file(kSprites / kSmall, directory / "sprites/with space/b$.png");
     std::ofstream(directory / "sprites/with space/b$.physics.json") << R"({"density": 2})";
   }
-  void TearDown() override { fs::remove_all(directory); }
 
   std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
-  fs::path directory;
 };
 
 TEST_F(DepfileCli, CookListsEveryFileReadAndDirectorySearched) {
@@ -88,7 +80,7 @@ TEST_F(DepfileCli, CookListsEveryFileReadAndDirectorySearched) {
                              " --json " + quoted(directory / "out.json") + " --depfile " +
                              quoted(directory / "out.d") + " -q");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const Rule rule = parse_depfile(read_text(directory / "out.d"));
+  const Rule rule = parse_depfile(read_bytes(directory / "out.d"));
   EXPECT_EQ(rule.targets, (std::set<std::string>{(directory / "out.hcb").string(),
                                                  (directory / "out.json").string()}));
   EXPECT_EQ(rule.dependencies,
@@ -96,7 +88,7 @@ TEST_F(DepfileCli, CookListsEveryFileReadAndDirectorySearched) {
                                    (sprites / "with space/b$.png").string(),
                                    (sprites / "with space/b$.physics.json").string(),
                                    sprites.string(), (sprites / "with space").string()}))
-      << read_text(directory / "out.d");
+      << read_bytes(directory / "out.d");
 }
 
 TEST_F(DepfileCli, LinkListsItsFragments) {
@@ -108,7 +100,7 @@ TEST_F(DepfileCli, LinkListsItsFragments) {
   auto result = run_hullcook("link " + quoted(fragment) + " -o " + quoted(directory / "g.hcb") +
                              " --depfile " + quoted(directory / "g.d") + " -q");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const Rule rule = parse_depfile(read_text(directory / "g.d"));
+  const Rule rule = parse_depfile(read_bytes(directory / "g.d"));
   EXPECT_EQ(rule.targets, std::set<std::string>{(directory / "g.hcb").string()});
   EXPECT_EQ(rule.dependencies, std::set<std::string>{fragment.string()});
 }

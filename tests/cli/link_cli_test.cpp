@@ -1,6 +1,7 @@
 // `hullcook cook X -o x.hcf` then `hullcook link`: the same bundle as one `cook DIR`, fragments
 // that do not depend on where their input was, and bad fragments refused with exit code 2.
 #include "run_command.h"
+#include "test_directory.h"
 
 #include "hullcook/core/error.h"
 #include "hullcook/format/fragment_layout.h"
@@ -17,29 +18,18 @@ namespace hullcook {
 namespace {
 
 namespace fs = std::filesystem;
+using test::read_bytes;
 using test::run_hullcook;
 
 const fs::path kSprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-}
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-class LinkCli : public ::testing::Test {
+class LinkCli : public test::TestDirectory {
  protected:
-  void SetUp() override {
-    directory = fs::temp_directory_path() /
-                ("hullcook_link_cli_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory);
-    fs::create_directories(directory);
-  }
-  void TearDown() override { fs::remove_all(directory); }
+  LinkCli() : TestDirectory("hullcook_link_cli_") {}
 
   // A nested folder of sprites, one with a physics sidecar; returns the names cook gives them.
   std::vector<std::string> make_sprite_folder(const fs::path& root) {
@@ -64,8 +54,6 @@ class LinkCli : public ::testing::Test {
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return read_bytes(fragment);
   }
-
-  fs::path directory;
 };
 
 const char* const kOptions = "-q --tau 1.5 --lod 6 --ppu 32 --friction 0.4";

@@ -6,6 +6,7 @@
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/depfile.h"
 #include "hullcook/cook/output_file.h"
+#include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
 
 #include <cstdio>
@@ -21,6 +22,7 @@ struct CookCommand {
   std::string json;
   std::string name;
   std::string depfile;
+  std::string report;
   bool quiet = false;
   Settings settings;
   CookOptions options;
@@ -82,6 +84,8 @@ void add_cook(CLI::App& root, CommandAction& action) {
   app->add_option("--depfile", command->depfile,
                   "Also write a Make/Ninja depfile here: the outputs depend on every file read "
                   "(images, physics sidecars) and directory searched");
+  app->add_option("--report", command->report,
+                  "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes, ms)");
   app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
   app->add_flag("-q,--quiet", command->quiet,
                 "Print no per-asset table (warnings still go to stderr)");
@@ -94,7 +98,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
       if (!command->name.empty() || app->count("--name") > 0) check_asset_name(*command, inputs);
-      if (!command->depfile.empty()) check_depfile(command->depfile, outputs, inputs);
+      check_side_outputs(command->depfile, command->report, outputs, inputs);
       CookResult result = cook(inputs, command->settings);
       if (!command->name.empty()) result.assets.front().name = command->name;
       auto files = output_files(result, outputs, command->settings, files_read(result));
@@ -102,6 +106,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
         files.emplace_back(command->depfile,
                            depfile_text(outputs, cook_dependencies(result, inputs)));
       }
+      if (!command->report.empty()) files.emplace_back(command->report, cook_report(result, true));
       write_files_atomically(files);
       if (!command->quiet) print_summary(result);
       print_warnings(result);

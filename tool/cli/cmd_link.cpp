@@ -6,6 +6,7 @@
 #include "hullcook/cook/depfile.h"
 #include "hullcook/cook/fragment.h"
 #include "hullcook/cook/output_file.h"
+#include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
 
 #include <algorithm>
@@ -21,6 +22,7 @@ struct LinkCommand {
   std::string output;
   std::string json;
   std::string depfile;
+  std::string report;
   bool draco = false;
   bool quiet = false;
 };
@@ -60,6 +62,8 @@ void add_link(CLI::App& root, CommandAction& action) {
   app->add_option("--json", command->json, "Also write the debug JSON here");
   app->add_option("--depfile", command->depfile,
                   "Also write a Make/Ninja depfile here: the outputs depend on the fragments");
+  app->add_option("--report", command->report,
+                  "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes)");
   app->add_flag("--draco", command->draco, "Compress glTF meshes with Draco");
   app->add_flag("-q,--quiet", command->quiet, "Print nothing on success");
   app->callback([command, &action] {
@@ -75,7 +79,7 @@ void add_link(CLI::App& root, CommandAction& action) {
       const std::vector<std::filesystem::path> fragments(command->fragments.begin(),
                                                          command->fragments.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, fragments);
-      if (!command->depfile.empty()) check_depfile(command->depfile, outputs, fragments);
+      check_side_outputs(command->depfile, command->report, outputs, fragments);
       const CookResult result = link_fragments(fragments);
       Settings settings;
       settings.draco = command->draco;
@@ -83,6 +87,7 @@ void add_link(CLI::App& root, CommandAction& action) {
       if (!command->depfile.empty()) {
         files.emplace_back(command->depfile, depfile_text(outputs, fragments));
       }
+      if (!command->report.empty()) files.emplace_back(command->report, cook_report(result, false));
       write_files_atomically(files);
       if (!command->quiet) {
         std::printf("linked %zu assets from %zu fragments into %s\n", result.assets.size(),

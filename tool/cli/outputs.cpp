@@ -29,21 +29,40 @@ std::vector<std::filesystem::path> checked_outputs(const std::string& command,
   return outputs;
 }
 
-void check_depfile(const std::filesystem::path& depfile,
-                   const std::vector<std::filesystem::path>& outputs,
-                   const std::vector<std::filesystem::path>& inputs) {
+namespace {
+
+void check_side_output(const std::string& option, const std::filesystem::path& path,
+                       const std::vector<std::filesystem::path>& outputs,
+                       const std::vector<std::filesystem::path>& inputs) {
   std::error_code error;
-  if (std::filesystem::is_directory(depfile, error)) {
-    throw OutputError(depfile.string() + ": cannot write: it is a directory");
+  if (std::filesystem::is_directory(path, error)) {
+    throw OutputError(path.string() + ": cannot write: it is a directory");
   }
-  check_directory_of(depfile);
+  check_directory_of(path);
   for (const std::filesystem::path& output : outputs) {
     if (std::filesystem::weakly_canonical(output, error) ==
-        std::filesystem::weakly_canonical(depfile, error)) {
-      throw UsageError("--depfile " + depfile.string() + " names an output");
+        std::filesystem::weakly_canonical(path, error)) {
+      throw UsageError(option + " " + path.string() + " names another output");
     }
   }
-  check_not_an_input(depfile, inputs);
+  check_not_an_input(path, inputs);
+}
+
+}  // namespace
+
+void check_side_outputs(const std::string& depfile, const std::string& report,
+                        std::vector<std::filesystem::path> outputs,
+                        const std::vector<std::filesystem::path>& inputs) {
+  if (!depfile.empty()) {
+    check_side_output("--depfile", depfile, outputs, inputs);
+    outputs.emplace_back(depfile);
+  }
+  if (!report.empty()) {
+    if (std::filesystem::path(report).extension() != ".json") {
+      throw UsageError("--report " + report + ": the report is written as .json");
+    }
+    check_side_output("--report", report, outputs, inputs);
+  }
 }
 
 }  // namespace hullcook::cli

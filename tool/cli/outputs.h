@@ -15,9 +15,10 @@ std::vector<std::filesystem::path> checked_outputs(const std::string& command,
                                                    const std::string& output,
                                                    const std::string& json);
 
-// Refuses before any work a --depfile that cannot be written, or that names an output or an input.
-void check_depfile(const std::filesystem::path& depfile,
-                   const std::vector<std::filesystem::path>& outputs,
-                   const std::vector<std::filesystem::path>& inputs);
+// Refuses before any work a --depfile or a --report (either may be empty: not asked for) that
+// cannot be written, a report not .json, or either naming another file written or read.
+void check_side_outputs(const std::string& depfile, const std::string& report,
+                        std::vector<std::filesystem::path> outputs,
+                        const std::vector<std::filesystem::path>& inputs);
 
 }  // namespace hullcook::cli
