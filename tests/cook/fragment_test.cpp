@@ -91,7 +91,7 @@ TEST(Fragment, SameBytesWhateverTheThreadCount) {
 
 TEST(Fragment, SettingsTextSeesEverySettingThatChangesAnAsset) {
   const Settings base = rich_settings();
-  std::vector<Settings> changed(12, base);
+  std::vector<Settings> changed(13, base);
   changed[0].tau.value = 1.0000001;
   changed[1].tau.relative = true;
   changed[2].measure = "sp";
@@ -104,6 +104,7 @@ TEST(Fragment, SettingsTextSeesEverySettingThatChangesAnAsset) {
   changed[9].max_verts = 0;
   changed[10].weld = 0.01;
   changed[11].physics->mask_bits = 1;
+  changed[12].grid = Grid{64, 64, 0, 0};
   for (std::size_t i = 0; i < changed.size(); ++i) {
     EXPECT_NE(settings_text(changed[i]), settings_text(base)) << "change " << i;
   }

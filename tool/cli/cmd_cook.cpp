@@ -62,6 +62,13 @@ void check_asset_name(const CookCommand& command,
   }
 }
 
+// --name: the one asset of a file is `name`; with --grid its cells are name/INDEX.
+void rename_assets(CookResult& result, const std::filesystem::path& input,
+                   const std::string& name) {
+  const std::size_t file_name = input.filename().generic_string().size();
+  for (CookedAsset& asset : result.assets) asset.name = name + asset.name.substr(file_name);
+}
+
 void add_cook(CLI::App& root, CommandAction& action) {
   auto command = std::make_shared<CookCommand>();
   CLI::App* app =
@@ -100,7 +107,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
       if (!command->name.empty() || app->count("--name") > 0) check_asset_name(*command, inputs);
       check_side_outputs(command->depfile, command->report, outputs, inputs);
       CookResult result = cook(inputs, command->settings);
-      if (!command->name.empty()) result.assets.front().name = command->name;
+      if (!command->name.empty()) rename_assets(result, inputs.front(), command->name);
       auto files = output_files(result, outputs, command->settings, files_read(result));
       if (!command->depfile.empty()) {
         files.emplace_back(command->depfile,

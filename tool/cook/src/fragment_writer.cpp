@@ -146,6 +146,14 @@ std::string settings_text(const Settings& settings) {
   line("min_hole_area", exact(settings.min_hole_area));
   line("simplify", settings.simplify ? exact(*settings.simplify) : "default");
   line("max_pixels", std::to_string(settings.max_pixels));
+  if (settings.grid) {
+    const Grid& grid = *settings.grid;
+    line("grid", std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) +
+                     " margin " + std::to_string(grid.margin) + " spacing " +
+                     std::to_string(grid.spacing));
+  } else {
+    line("grid", "none");
+  }
   line("pixels_per_unit", exact(settings.pixels_per_unit));
   line("pivot", exact(settings.pivot_u) + "," + exact(settings.pivot_v));
   line("y_down", settings.y_down ? "true" : "false");

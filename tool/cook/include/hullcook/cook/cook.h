@@ -28,6 +28,16 @@ struct Tolerance {
   }
 };
 
+// A uniform grid of cells in every input image, each cell one asset (`--grid 64x64`).
+struct Grid {
+  int cell_width = 0, cell_height = 0;  // [px]
+  int margin = 0;                       // [px] before the first row and column
+  int spacing = 0;                      // [px] between cells
+
+  // The cell size: "64x32", or "64" for a square. Throws UsageError.
+  static Grid parse(const std::string& text);
+};
+
 struct Settings {
   // Decomposition (issue 3).
   Tolerance tau{2.0, false};    // [input units] or relative to R
@@ -44,6 +54,8 @@ struct Settings {
   double min_hole_area = 4.0;                            // [px²]
   std::optional<double> simplify;                        // [px] default: τ / 4
   std::uint64_t max_pixels = 64ull * 1000 * 1000;
+  // Images cut into cells, each non-empty cell an asset named NAME/INDEX (row-major from 0).
+  std::optional<Grid> grid;
 
   // Pixels to world.
   double pixels_per_unit = 1.0;
