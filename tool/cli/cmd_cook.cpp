@@ -1,4 +1,4 @@
-// hullcook cook INPUT... -o OUT.hcb|.gltf|.glb|.json
+// hullcook cook INPUT... -o OUT.hcb|.gltf|.glb|.json|.hcf
 #include "commands.h"
 #include "cook_options.h"
 #include "outputs.h"
