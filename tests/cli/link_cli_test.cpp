@@ -96,6 +96,8 @@ TEST_F(LinkCli, AFragmentDoesNotDependOnWhereItsInputWas) {
   const std::string here =
       cook_fragment(directory / "a/deep/er/level/grid.png", directory / "a.hcf",
                     std::string(kOptions) + " --threads 1");
+  // run_hullcook runs `hullcook ARGS` in a shell: a harmless first command, then the cook from
+  // the sprite's own directory.
   auto there = run_hullcook("-h >/dev/null; cd " + (directory / "b/level").string() + " && " +
                             HULLCOOK_EXE + " cook grid.png -o ../../b.hcf --threads 2 " + kOptions);
   ASSERT_EQ(there.exit_code, 0) << there.output;
