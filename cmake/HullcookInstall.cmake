@@ -1,5 +1,6 @@
 # Installs the runtime (and the format header it reads) as a CMake package, so that a game can
 #   find_package(hullcook) ; target_link_libraries(game PRIVATE hullcook::runtime)
+# and, where the cooker is built, cook its sprites with hullcook_add_bundle().
 include(CMakePackageConfigHelpers)
 install(TARGETS hullcook_formats hullcook_runtime EXPORT hullcookTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -16,6 +17,11 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/hullcookConfigVersi
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/hullcookConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/hullcookConfigVersion.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hullcook)
+# The cooker, when built, as hullcook::hullcook, with hullcook_add_bundle() to run it from a
+# game's build (cmake/HullcookBundle.cmake).
 if(TARGET hullcook)
-  install(TARGETS hullcook RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS hullcook EXPORT hullcookToolTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(EXPORT hullcookToolTargets NAMESPACE hullcook:: FILE hullcookToolTargets.cmake
+          DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hullcook)
 endif()
+install(FILES cmake/HullcookBundle.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hullcook)

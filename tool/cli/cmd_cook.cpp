@@ -1,9 +1,12 @@
-// hullcook cook INPUT... -o OUT.hcb|.gltf|.glb|.json
+// hullcook cook INPUT... -o OUT.hcb|.gltf|.glb|.json|.hcf
 #include "commands.h"
 #include "cook_options.h"
+#include "outputs.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/depfile.h"
 #include "hullcook/cook/output_file.h"
+#include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
 
 #include <cstdio>
@@ -17,6 +20,9 @@ struct CookCommand {
   std::vector<std::string> inputs;
   std::string output;
   std::string json;
+  std::string name;
+  std::string depfile;
+  std::string report;
   bool quiet = false;
   Settings settings;
   CookOptions options;
@@ -43,6 +49,26 @@ void print_warnings(const CookResult& result) {
   }
 }
 
+// --name names the one asset of one input file: refused before cooking otherwise.
+void check_asset_name(const CookCommand& command,
+                      const std::vector<std::filesystem::path>& inputs) {
+  std::error_code error;
+  if (inputs.size() != 1 || !std::filesystem::is_regular_file(inputs.front(), error)) {
+    throw UsageError("--name names the asset of one input file; cook each file on its own");
+  }
+  // The bundle stores a name's length in 16 bits (formats/SPEC.md §4).
+  if (command.name.empty() || command.name.size() > 65535) {
+    throw UsageError("--name: a name is 1 to 65535 bytes");
+  }
+}
+
+// --name: the one asset of a file is `name`; with --grid its cells are name/INDEX.
+void rename_assets(CookResult& result, const std::filesystem::path& input,
+                   const std::string& name) {
+  const std::size_t file_name = input.filename().generic_string().size();
+  for (CookedAsset& asset : result.assets) asset.name = name + asset.name.substr(file_name);
+}
+
 void add_cook(CLI::App& root, CommandAction& action) {
   auto command = std::make_shared<CookCommand>();
   CLI::App* app =
@@ -57,44 +83,46 @@ void add_cook(CLI::App& root, CommandAction& action) {
       ->check(CLI::ExistingPath);
   app->add_option("-o,--output", command->output,
                   "Output file; the writer is picked by extension: .hcb, "
-                  ".gltf, .glb, .json");
+                  ".gltf, .glb, .json, or .hcf: a fragment for hullcook link");
   app->add_option("--json", command->json, "Also write the debug JSON here");
+  app->add_option("--name", command->name,
+                  "The asset's name (default: its file name); with one input file, as when "
+                  "cooking fragments one by one from a folder");
+  app->add_option("--depfile", command->depfile,
+                  "Also write a Make/Ninja depfile here: the outputs depend on every file read "
+                  "(images, physics sidecars) and directory searched");
+  app->add_option("--report", command->report,
+                  "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes, ms)");
   app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
   app->add_flag("-q,--quiet", command->quiet,
                 "Print no per-asset table (warnings still go to stderr)");
   add_cook_options(*app, command->settings, command->options);
   app->callback([command, app, &action] {
     action = [command, app] {
-      if (command->output.empty() && command->json.empty()) {
-        throw UsageError(
-            "cook: give an output with -o "
-            "OUT.hcb|.gltf|.glb|.json or --json OUT");
-      }
       finish_cook_options(*app, command->settings, command->options);
-      // What can be refused before cooking is: a long cook must not end in a usage error.
-      std::vector<std::filesystem::path> outputs;
-      if (!command->output.empty()) outputs.emplace_back(command->output);
-      if (!command->json.empty()) {
-        if (std::filesystem::path(command->json).extension() != ".json") {
-          throw UsageError("--json " + command->json + ": the debug JSON is written as .json");
-        }
-        outputs.emplace_back(command->json);
-      }
-      for (const std::filesystem::path& output : outputs) check_output_path(output);
-      std::error_code error;
-      if (outputs.size() == 2 && std::filesystem::weakly_canonical(outputs[0], error) ==
-                                     std::filesystem::weakly_canonical(outputs[1], error)) {
-        throw UsageError("-o and --json name the same file: " + command->json);
-      }
+      const std::vector<std::filesystem::path> outputs =
+          checked_outputs("cook", command->output, command->json);
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
-      // Only the debug JSON reads the outlines: without it they are freed asset by asset.
+      if (!command->name.empty() || app->count("--name") > 0) check_asset_name(*command, inputs);
+      check_side_outputs(command->depfile, command->report, outputs, inputs);
+      // Only the debug JSON and fragments (which link may turn into JSON) keep the outlines:
+      // without them they are freed asset by asset.
       command->settings.keep_outlines = false;
       for (const std::filesystem::path& output : outputs) {
-        if (output.extension() == ".json") command->settings.keep_outlines = true;
+        if (output.extension() == ".json" || output.extension() == ".hcf") {
+          command->settings.keep_outlines = true;
+        }
       }
       CookResult result = cook(inputs, command->settings);
-      write_outputs(result, outputs, command->settings);
+      if (!command->name.empty()) rename_assets(result, inputs.front(), command->name);
+      auto files = output_files(result, outputs, command->settings, files_read(result));
+      if (!command->depfile.empty()) {
+        files.emplace_back(command->depfile,
+                           depfile_text(outputs, cook_dependencies(result, inputs)));
+      }
+      if (!command->report.empty()) files.emplace_back(command->report, cook_report(result, true));
+      write_files_atomically(files);
       if (!command->quiet) print_summary(result);
       print_warnings(result);
       return 0;

@@ -113,6 +113,18 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->group("Tracing");
 
   command
+      .add_option("--grid", options.grid,
+                  "Cut every image into cells of WxH px (64x64, or 64), each non-empty cell an "
+                  "asset named NAME/INDEX (row-major from 0)")
+      ->group("Sheets");
+  command.add_option("--margin", options.margin, "With --grid: px before the first row and column")
+      ->check(CLI::Range(0, 65535))
+      ->group("Sheets");
+  command.add_option("--spacing", options.spacing, "With --grid: px between cells")
+      ->check(CLI::Range(0, 65535))
+      ->group("Sheets");
+
+  command
       .add_option("--ppu", settings.pixels_per_unit, "Pixels per output unit (e.g. 32 px = 1 m)")
       ->check(number_in(1e-6, 1e6, "a scale in [1e-6, 1e6] pixels per unit"))
       ->capture_default_str()
@@ -185,6 +197,14 @@ void finish_cook_options(const CLI::App& command, Settings& settings, const Cook
   if (settings.max_verts == 1 || settings.max_verts == 2) {
     throw UsageError("--max-verts: " + std::to_string(settings.max_verts) +
                      " is too few for a polygon: use 0 (unlimited) or at least 3");
+  }
+  if (!options.grid.empty()) {
+    Grid grid = Grid::parse(options.grid);
+    grid.margin = options.margin;
+    grid.spacing = options.spacing;
+    settings.grid = grid;
+  } else if (command.count("--margin") > 0 || command.count("--spacing") > 0) {
+    throw UsageError("--margin and --spacing describe a --grid: give one");
   }
   if (options.weld >= 0) settings.weld = options.weld;
   if (options.simplify >= 0) settings.simplify = options.simplify;

@@ -15,6 +15,9 @@ struct CookOptions {
   std::string pivot = "0.5,0.5";
   double weld = -1;
   double simplify = -1;
+  std::string grid;
+  int margin = 0;
+  int spacing = 0;
   PhysicsProperties physics;
 };
 

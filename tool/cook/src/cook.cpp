@@ -2,6 +2,7 @@
 // engine limits.
 #include "hullcook/cook/cook.h"
 
+#include "grid.h"
 #include "hullcook/cook/constrain.h"
 #include "hullcook/cook/contract.h"
 #include "hullcook/core/clean.h"
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -40,12 +42,47 @@ double milliseconds_since(Clock::time_point start) {
 struct InputFile {
   std::filesystem::path path;
   std::string name;  // relative to the input root, '/'-separated
+  // A cell of a grid (--grid): the sheet, decoded once for all its cells, and where it lies.
+  std::shared_ptr<const AlphaImage> sheet;
+  GridCell cell;
+  double decode_ms = 0;  // [ms] the sheet's decoding, counted on its first cell
 };
 
 bool is_poly_file(const std::filesystem::path& path) { return path.extension() == ".poly"; }
 
+TraceSettings trace_settings(const Settings& settings, double simplify_px);
+
+// Adds an input file; with --grid an image adds its cells instead, named NAME/INDEX (Tiled's
+// row-major tile number), sorted by name as link sorts assets. The sheet is decoded here, once.
+void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
+                    const std::string& name, const Settings& settings) {
+  if (!settings.grid || is_poly_file(path)) {
+    files.push_back({path, name, nullptr, {}, 0});
+    return;
+  }
+  const auto start = Clock::now();
+  auto sheet = std::make_shared<const AlphaImage>(load_alpha(path, trace_settings(settings, 0)));
+  const double decode_ms = milliseconds_since(start);
+  const Grid& grid = *settings.grid;
+  const std::vector<GridCell> cells = grid_cells(sheet->width, sheet->height, grid);
+  if (cells.empty()) {
+    throw InputError(path.string() + ": a " + std::to_string(sheet->width) + "x" +
+                     std::to_string(sheet->height) + " image holds no whole " +
+                     std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) +
+                     " cell at margin " + std::to_string(grid.margin) + " (--grid, --margin)");
+  }
+  const std::size_t first = files.size();
+  for (const GridCell& cell : cells) {
+    files.push_back({path, name + "/" + std::to_string(cell.index), sheet, cell,
+                     files.size() == first ? decode_ms : 0});
+  }
+  std::sort(files.begin() + static_cast<std::ptrdiff_t>(first), files.end(),
+            [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
+}
+
 // Expands directories (recursively) into image files; files are taken as given. In name order.
-std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs) {
+std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs,
+                                      const Settings& settings) {
   std::vector<InputFile> files;
   for (const std::filesystem::path& input : inputs) {
     std::error_code error;
@@ -56,7 +93,8 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         // The non-throwing form: a symbolic link loop is an entry that is no regular file.
         std::error_code entry_error;
         if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
-          found.push_back({it->path(), it->path().lexically_relative(input).generic_string()});
+          add_input_file(found, it->path(), it->path().lexically_relative(input).generic_string(),
+                         settings);
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
@@ -71,7 +109,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
                 [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
       files.insert(files.end(), found.begin(), found.end());
     } else if (std::filesystem::is_regular_file(input, error)) {
-      files.push_back({input, input.filename().generic_string()});
+      add_input_file(files, input, input.filename().generic_string(), settings);
     } else {
       throw InputError(input.string() + ": no such file or directory");
     }
@@ -228,8 +266,9 @@ double default_simplify(double tau_px) { return std::clamp(tau_px / 4, 0.05, 1.0
 PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   auto start = Clock::now();
   PreparedInput prepared;
-  AlphaImage image = load_alpha(file.path, trace_settings(settings, 0));
-  prepared.decode_ms = milliseconds_since(start);
+  AlphaImage image = file.sheet ? crop(*file.sheet, file.cell)
+                                : load_alpha(file.path, trace_settings(settings, 0));
+  prepared.decode_ms = file.sheet ? file.decode_ms : milliseconds_since(start);
   start = Clock::now();
   prepared.width = image.width;
   prepared.height = image.height;
@@ -443,6 +482,24 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
   return asset;
 }
 
+// A grid's empty cells are no assets; a sheet whose every cell is empty is refused, as a
+// directory without images is: a wrong --grid or --alpha, most likely.
+void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
+  std::vector<CookedAsset> kept;
+  std::map<std::filesystem::path, bool> sheet_has_cells;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const bool empty_cell = files[i].sheet && result.assets[i].regions.empty();
+    if (files[i].sheet) sheet_has_cells[files[i].path] |= !empty_cell;
+    if (!empty_cell) kept.push_back(std::move(result.assets[i]));
+  }
+  for (const auto& [sheet, has_cells] : sheet_has_cells) {
+    if (!has_cells) {
+      throw InputError(sheet.string() + ": every cell of the grid is empty (--grid, --alpha)");
+    }
+  }
+  result.assets = std::move(kept);
+}
+
 }  // namespace
 
 // Holes are resolved one at a time, each on the component holding the rest: time and memory grow
@@ -482,7 +539,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
   }
   if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
-  std::vector<InputFile> files = collect_inputs(inputs);
+  std::vector<InputFile> files = collect_inputs(inputs, settings);
   // Tracing and decomposing allocate and free buffers of megabytes; glibc would map each one
   // afresh and give it back, so that every asset paid its page faults again (a tenth of a
   // cook). Freed memory stays in the process for the next buffer instead.
@@ -544,6 +601,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }
+  if (settings.grid) drop_empty_cells(files, result);
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/debug_json.h"
+#include "hullcook/cook/fragment.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
@@ -10,7 +11,7 @@
 namespace hullcook {
 namespace {
 
-enum class OutputFormat { json, bundle, gltf, glb };
+enum class OutputFormat { json, bundle, gltf, glb, fragment };
 
 OutputFormat output_format(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
@@ -18,8 +19,9 @@ OutputFormat output_format(const std::filesystem::path& path) {
   if (extension == ".hcb") return OutputFormat::bundle;
   if (extension == ".gltf") return OutputFormat::gltf;
   if (extension == ".glb") return OutputFormat::glb;
+  if (extension == ".hcf") return OutputFormat::fragment;
   throw UsageError(path.string() + ": unknown output format '" + extension +
-                   "'; use .hcb, .gltf, .glb or .json");
+                   "'; use .hcb, .gltf, .glb, .json or .hcf");
 }
 
 std::string output_bytes(const CookResult& result, const std::filesystem::path& path,
@@ -33,6 +35,8 @@ std::string output_bytes(const CookResult& result, const std::filesystem::path& 
     case OutputFormat::gltf:
     case OutputFormat::glb:
       return write_gltf(result.assets, GltfOptions{format == OutputFormat::glb, settings.draco});
+    case OutputFormat::fragment:
+      return write_fragment(result.assets, settings);
   }
   return {};
 }
@@ -64,15 +68,20 @@ void write_output(const CookResult& result, const std::filesystem::path& path,
   write_outputs(result, {path}, settings);
 }
 
-void write_outputs(const CookResult& result, const std::vector<std::filesystem::path>& paths,
-                   const Settings& settings) {
-  const std::vector<std::filesystem::path> inputs = files_read(result);
+std::vector<std::pair<std::filesystem::path, std::string>> output_files(
+    const CookResult& result, const std::vector<std::filesystem::path>& paths,
+    const Settings& settings, const std::vector<std::filesystem::path>& inputs) {
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const std::filesystem::path& path : paths) {
     check_not_an_input(path, inputs);
     files.emplace_back(path, output_bytes(result, path, settings));
   }
-  write_files_atomically(files);
+  return files;
+}
+
+void write_outputs(const CookResult& result, const std::vector<std::filesystem::path>& paths,
+                   const Settings& settings) {
+  write_files_atomically(output_files(result, paths, settings, files_read(result)));
 }
 
 }  // namespace hullcook

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hullcook {
@@ -27,6 +28,16 @@ struct Tolerance {
   }
 };
 
+// A uniform grid of cells in every input image, each cell one asset (`--grid 64x64`).
+struct Grid {
+  int cell_width = 0, cell_height = 0;  // [px]
+  int margin = 0;                       // [px] before the first row and column
+  int spacing = 0;                      // [px] between cells
+
+  // The cell size: "64x32", or "64" for a square. Throws UsageError.
+  static Grid parse(const std::string& text);
+};
+
 struct Settings {
   // Decomposition (issue 3).
   Tolerance tau{2.0, false};    // [input units] or relative to R
@@ -43,6 +54,8 @@ struct Settings {
   double min_hole_area = 4.0;                            // [px²]
   std::optional<double> simplify;                        // [px] default: τ / 4
   std::uint64_t max_pixels = 64ull * 1000 * 1000;
+  // Images cut into cells, each non-empty cell an asset named NAME/INDEX (row-major from 0).
+  std::optional<Grid> grid;
 
   // Pixels to world.
   double pixels_per_unit = 1.0;
@@ -91,7 +104,14 @@ std::filesystem::path physics_sidecar(const std::filesystem::path& input);
 // The files a cook read: every asset's source, and its physics sidecar where there is one.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
 
-// Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json).
+// The bytes of every output path, by extension (.hcb, .gltf, .glb, .json, or .hcf, a fragment:
+// see fragment.h), ready for write_files_atomically. Throws UsageError for an unknown extension
+// or a path that is one of inputs.
+std::vector<std::pair<std::filesystem::path, std::string>> output_files(
+    const CookResult& result, const std::vector<std::filesystem::path>& paths,
+    const Settings& settings, const std::vector<std::filesystem::path>& inputs);
+
+// Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json, .hcf).
 // Writes to a temporary file and renames it; throws OutputError, or UsageError for an unknown
 // extension or a path that is one of files_read(result).
 void write_output(const CookResult& result, const std::filesystem::path& path,

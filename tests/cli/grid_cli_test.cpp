@@ -1,0 +1,129 @@
+// --grid WxH [--margin M] [--spacing S]: every non-empty cell of a sheet is an asset named
+// NAME/INDEX, in its own cell's coordinates; empty cells are skipped.
+#include "png_writer.h"
+#include "run_command.h"
+#include "test_directory.h"
+
+#include "hullcook/core/error.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+namespace hullcook {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using test::read_bytes;
+using test::run_hullcook;
+
+// A 3 x 2 grid of 8 x 8 cells, 1 px of margin and 2 px between cells: a sheet of
+// 1 + 3 * 8 + 2 * 2 + 1 = 30 by 1 + 2 * 8 + 2 + 1 = 20 px (the last pixel column and row are
+// spare). Cells 0, 2, 3 and 5 hold an opaque rectangle [x0, x1) x [y0, y1) in cell pixels; 1 and
+// 4 are empty.
+constexpr int kCell = 8, kMargin = 1, kSpacing = 2, kColumns = 3, kWidth = 30, kHeight = 20;
+const std::map<int, std::array<int, 4>> kRectangles = {
+    {0, {0, 0, 8, 8}}, {2, {2, 1, 7, 4}}, {3, {1, 3, 4, 8}}, {5, {5, 5, 8, 7}}};
+
+std::string sheet_png() {
+  std::vector<std::uint8_t> pixels(kWidth * kHeight * 4, 0);
+  for (const auto& [index, r] : kRectangles) {
+    const int left = kMargin + (index % kColumns) * (kCell + kSpacing);
+    const int top = kMargin + (index / kColumns) * (kCell + kSpacing);
+    for (int y = r[1]; y < r[3]; ++y) {
+      for (int x = r[0]; x < r[2]; ++x) pixels[((top + y) * kWidth + left + x) * 4 + 3] = 255;
+    }
+  }
+  // Opaque pixels in the margin and the spacing, which no cell may see.
+  for (int x = 0; x < kWidth; ++x) pixels[x * 4 + 3] = 255;
+  for (int y = 0; y < kHeight; ++y) pixels[(y * kWidth + kMargin + kCell) * 4 + 3] = 255;
+  return test::make_png(kWidth, kHeight, 6, pixels);
+}
+
+class GridCli : public test::TestDirectory {
+ protected:
+  GridCli() : TestDirectory("hullcook_grid_cli_") {}
+  void SetUp() override {
+    TestDirectory::SetUp();
+    fs::create_directories(directory / "art/tiles");
+    std::ofstream(directory / "art/tiles/sheet.png", std::ios::binary) << sheet_png();
+  }
+};
+
+// No simplification: the traced outline keeps every pixel edge, so the hulls span the rectangles.
+const std::string kGrid = " --grid 8x8 --margin 1 --spacing 2 --pivot 0,0 --y-down --simplify 0 -q";
+
+TEST_F(GridCli, EveryNonEmptyCellIsAnAssetInItsOwnCoordinates) {
+  auto result = run_hullcook("cook " + (directory / "art").string() + kGrid + " -o " +
+                             (directory / "out.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const json assets = json::parse(read_bytes(directory / "out.json"))["assets"];
+  ASSERT_EQ(assets.size(), kRectangles.size());
+  for (const json& asset : assets) {
+    const std::string name = asset["name"];
+    SCOPED_TRACE(name);
+    ASSERT_EQ(name.rfind("tiles/sheet.png/", 0), 0u);
+    const int index = std::stoi(name.substr(name.rfind('/') + 1));
+    ASSERT_TRUE(kRectangles.count(index));
+    EXPECT_EQ(asset["image"]["width"], kCell);
+    EXPECT_EQ(asset["image"]["height"], kCell);
+    // Hard edges lie on pixel borders: the hulls span the rectangle exactly, in cell pixels.
+    double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
+    for (const json& hull : asset["levels"][0]["hulls"]) {
+      for (const json& point : hull) {
+        x0 = std::min(x0, point[0].get<double>());
+        x1 = std::max(x1, point[0].get<double>());
+        y0 = std::min(y0, point[1].get<double>());
+        y1 = std::max(y1, point[1].get<double>());
+      }
+    }
+    const std::array<int, 4>& r = kRectangles.at(index);
+    EXPECT_NEAR(x0, r[0], 1e-9);
+    EXPECT_NEAR(y0, r[1], 1e-9);
+    EXPECT_NEAR(x1, r[2], 1e-9);
+    EXPECT_NEAR(y1, r[3], 1e-9);
+  }
+}
+
+TEST_F(GridCli, ASheetsFragmentLinksToTheBytesOfOneCook) {
+  auto one = run_hullcook("cook " + (directory / "art").string() + kGrid + " -o " +
+                          (directory / "one.hcb").string());
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  auto fragment = run_hullcook("cook " + (directory / "art/tiles/sheet.png").string() + kGrid +
+                               " --name tiles/sheet.png -o " + (directory / "sheet.hcf").string());
+  ASSERT_EQ(fragment.exit_code, 0) << fragment.output;
+  auto linked = run_hullcook("link " + (directory / "sheet.hcf").string() + " -q -o " +
+                             (directory / "linked.hcb").string());
+  ASSERT_EQ(linked.exit_code, 0) << linked.output;
+  EXPECT_EQ(read_bytes(directory / "linked.hcb"), read_bytes(directory / "one.hcb"));
+}
+
+TEST_F(GridCli, GridsThatCutNothingAreRefused) {
+  const std::string sheet = (directory / "art/tiles/sheet.png").string();
+  const std::string out = " -o " + (directory / "out.hcb").string();
+  auto too_large = run_hullcook("cook " + sheet + " --grid 31x8" + out);
+  EXPECT_EQ(too_large.exit_code, static_cast<int>(ExitCode::bad_input)) << too_large.output;
+  EXPECT_NE(too_large.output.find(sheet + ": a 30x20 image holds no whole 31x8 cell"),
+            std::string::npos)
+      << too_large.output;
+  std::ofstream(directory / "empty.png", std::ios::binary)
+      << test::make_png(kWidth, kHeight, 6, std::vector<std::uint8_t>(kWidth * kHeight * 4, 0));
+  auto empty = run_hullcook("cook " + (directory / "empty.png").string() + " --grid 8" + out);
+  EXPECT_EQ(empty.exit_code, static_cast<int>(ExitCode::bad_input)) << empty.output;
+  EXPECT_NE(empty.output.find("every cell of the grid is empty"), std::string::npos);
+  EXPECT_EQ(run_hullcook("cook " + sheet + " --margin 1" + out).exit_code,
+            static_cast<int>(ExitCode::usage));
+  EXPECT_EQ(run_hullcook("cook " + sheet + " --grid 8x" + out).exit_code,
+            static_cast<int>(ExitCode::usage));
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+}
+
+}  // namespace
+}  // namespace hullcook
