@@ -57,6 +57,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     regions = clean_and_validate(parse_poly(text, "fuzz.poly"), "fuzz.poly");
     refuse_too_many_holes(regions, "fuzz.poly", false);
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      refuse_sliver_regions({regions[r]}, "fuzz.poly", r + 1);
+    }
   } catch (const InputError&) {
     return 0;
   }
