@@ -301,5 +301,27 @@ TEST_F(CookCli, Issue19_OutputDoesNotDependOnTheWorkingDirectory) {
   }
 }
 
+// Issue 19's fuzzing of the decomposer: a 64-gon of radius 10 with one vertex drawn out into a
+// spike 1.6 wide and 4.5e16 long, thinner than a billionth of its length, so that no piece of it
+// can keep the contract: it was an internal error (exit 4), it is bad input. Cooked with the spike
+// 1e9 long, inside the cook's coordinate range.
+TEST_F(CookCli, Issue19FuzzSpikeThinnerThanTheContractAllowsIsBadInput) {
+  const fs::path fuzzed = fs::path(HULLCOOK_SOURCE_DIR) / "tests/core/data/issue19_fuzz_spike.poly";
+  std::ifstream file(fuzzed, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const fs::path json = directory / "pieces.json";
+  auto result = run_hullcook("decompose " + fuzzed.string() + " --tau 1% --json " + json.string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find(fuzzed.string() + ": region 1 is too thin"), std::string::npos)
+      << result.output;
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+  EXPECT_FALSE(fs::exists(json));
+
+  const std::string far_tip = "-45035996273704969.43404";
+  ASSERT_NE(text.find(far_tip), std::string::npos);
+  text.replace(text.find(far_tip), far_tip.size(), "-1e9");
+  expect_bad_input(write("spike.poly", text), "region 1 is too thin");
+}
+
 }  // namespace
 }  // namespace hullcook

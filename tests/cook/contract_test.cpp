@@ -273,6 +273,40 @@ TEST(Contract, SliverPieceIsNamed) {
   EXPECT_FALSE(names(violations, 0, "sliver")) << listed(violations);
 }
 
+// Issue 19's fuzzing of the decomposer: an input region that is itself a sliver by the contract
+// (a spike thinner than a billionth of its length; a unit triangle whose rounding slack, 1e14
+// from the origin, is larger than it) cannot be cut into pieces that keep the contract. It is
+// refused as bad input before decomposing; a region only 1e-7 of its length thin is not.
+TEST(Issue19Fuzz, RegionsThatAreSliversThemselvesAreRefusedAsBadInput) {
+  auto spike = [](double length) {
+    return Region{{{0, 0}, {0.9, 0}, {1, -length}, {1.1, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
+  };
+  const Vec2 far{1e14, 1e14};
+  const Region far_triangle{{far, far + Vec2{1, 0}, far + Vec2{0, 1}}, {}};
+  const Region square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
+  for (const Region& sliver : {spike(1e9), far_triangle}) {
+    const double tau = 0.01 * enclosing_radius({sliver});
+    const DecompositionTree tree = decompose(sliver, {tau, Measure::h1, 0.1, 1.0});
+    std::vector<CookedPiece> pieces;
+    for (const Piece& piece : tree.pieces_at(tau)) {
+      pieces.push_back({piece.component, piece.hull, piece.concavity});
+    }
+    const std::vector<std::string> violations =
+        find_contract_violations(pieces, {sliver}, {tau, Measure::h1, {0, 0.0}});
+    EXPECT_TRUE(says(violations, "is a sliver")) << listed(violations);
+    try {
+      refuse_sliver_regions({sliver}, "fuzz.poly", 3);
+      FAIL() << "not refused";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.code, ExitCode::bad_input);
+      EXPECT_TRUE(std::string(error.what()).starts_with("fuzz.poly: region 3 is too thin to cut"))
+          << error.what();
+    }
+  }
+  EXPECT_NO_THROW(refuse_sliver_regions({spike(1e7), square}, "fuzz.poly"));
+  EXPECT_NO_THROW(refuse_sliver_regions({}, "fuzz.poly"));
+}
+
 TEST(Contract, AViolationIsAnInternalErrorNamingTheAssetAndTheFirst) {
   CookedAsset asset = grid_sprite();
   std::reverse(asset.pieces[2].hull.begin(), asset.pieces[2].hull.end());

@@ -50,6 +50,10 @@ int run_decompose(const DecomposeOptions& options) {
   if (!options.json.empty()) check_not_an_input(options.json, {options.input});
   const std::vector<Region> regions = read_poly_file(options.input);
   refuse_too_many_holes(regions, options.input, false);
+  // Each region's pieces are checked against that region alone (below).
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    refuse_sliver_regions({regions[r]}, options.input, r + 1);
+  }
   const double tau = tolerance.resolve(enclosing_radius(regions));
   const DecomposeSettings settings{tau, *measure, options.sc, options.sd};
 

@@ -48,6 +48,19 @@ double rounding_slack(const std::vector<Region>& outline) {
 
 // --- The components: valid regions, no slivers. --------------------------------------------
 
+// A sliver: zero area but for rounding, thinner than a billionth of its length. Described as
+// "area A over a length of L".
+std::optional<std::string> sliver_defect(const Region& region, double slack) {
+  Vec2 low = region.outer.front(), high = low;
+  for (Vec2 p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
+  const double length = std::hypot(high.x - low.x, high.y - low.y);
+  const double area = region_area(region);
+  if (area <= length * std::max(1e-9 * length, slack)) {
+    return "area " + number(area) + " over a length of " + number(length);
+  }
+  return std::nullopt;
+}
+
 // Sets cleaned to the component without repeated or collinear vertices (what is measured).
 // Whether ring is a strictly convex counter-clockwise polygon: every turn strictly left (exact
 // predicate) and the edges' directions turning once round, so that x and y each change their
@@ -105,14 +118,8 @@ std::optional<std::string> component_defect(const Region& component, bool convex
       return "its component's hole " + std::to_string(h + 1) + " is not clockwise";
     }
   }
-  // A sliver: zero area but for rounding, thinner than a billionth of its length.
-  Vec2 low = component.outer.front(), high = low;
-  for (Vec2 p : component.outer) low = glm::min(low, p), high = glm::max(high, p);
-  const double length = std::hypot(high.x - low.x, high.y - low.y);
-  const double area = region_area(component);
-  if (area <= length * std::max(1e-9 * length, slack)) {
-    return "its component is a sliver: area " + number(area) + " over a length of " +
-           number(length);
+  if (const std::optional<std::string> sliver = sliver_defect(component, slack)) {
+    return "its component is a sliver: " + *sliver;
   }
   return std::nullopt;
 }
@@ -631,6 +638,19 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
     }
   }
   return violations;
+}
+
+void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
+                           std::size_t first_region_number) {
+  if (outline.empty()) return;
+  const double slack = rounding_slack(outline);
+  for (std::size_t r = 0; r < outline.size(); ++r) {
+    if (const std::optional<std::string> sliver = sliver_defect(outline[r], slack)) {
+      throw InputError(source + ": region " + std::to_string(first_region_number + r) +
+                       " is too thin to cut into pieces within the output's contract (" + *sliver +
+                       ")");
+    }
+  }
 }
 
 void enforce_contract(const std::string& source, const std::vector<std::string>& violations) {

@@ -39,6 +39,14 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
                                                   const std::vector<Region>& outline,
                                                   const ContractTerms& terms);
 
+// Throws InputError "SOURCE: region R is too thin to cut into pieces within the output's contract
+// (area A over a length of L)" when a region of outline is itself a sliver as the contract judges
+// pieces checked against outline: no decomposition of it could keep the contract, so it is bad
+// input, not an internal error (issue 19's fuzzing: a 1.6 wide spike 1e9 long). Regions are
+// numbered from first_region_number.
+void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
+                           std::size_t first_region_number = 1);
+
 // Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
 // more)" when there are violations.
 void enforce_contract(const std::string& source, const std::vector<std::string>& violations);

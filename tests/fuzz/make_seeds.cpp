@@ -1,0 +1,224 @@
+// fuzz_make_seeds SOURCE_DIR OUT_DIR: the fuzz targets' seed corpora, made from samples/ into the
+// build tree (scripts/fuzz): OUT_DIR/poly (the small sample polygons and the core tests' data),
+// OUT_DIR/image (the small sample sprites as they are, and every sprite shrunk to at most
+// kSeedSide px a side as PNG, BMP, TGA and WebP) and OUT_DIR/bundle (bundles cooked from those
+// polygons and images, one asset each, and one with several assets, levels and physics).
+#include "canvas.h"  // tool/cook/src: encode_png
+#include "fuzz_limits.h"
+
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/error.h"
+#include "hullcook/core/poly_io.h"
+#include "hullcook/trace/trace.h"
+
+#include <webp/encode.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace hullcook;
+
+constexpr int kSeedSide = 48;
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream contents;
+  contents << file.rdbuf();
+  return contents.str();
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream file(path, std::ios::binary);
+  file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!file) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string little_endian(std::uint32_t value, int bytes) {
+  std::string out;
+  for (int i = 0; i < bytes; ++i) out += static_cast<char>((value >> (8 * i)) & 0xFF);
+  return out;
+}
+
+std::vector<fs::path> files_under(const fs::path& dir, const std::string& extension) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == extension) {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Nearest-neighbour shrinking by a whole factor, so that the long side is at most kSeedSide.
+RgbaImage shrunk(const RgbaImage& image) {
+  const int factor = (std::max(image.width, image.height) + kSeedSide - 1) / kSeedSide;
+  RgbaImage small;
+  small.width = std::max(1, image.width / factor);
+  small.height = std::max(1, image.height / factor);
+  small.has_alpha = image.has_alpha;
+  for (int y = 0; y < small.height; ++y) {
+    for (int x = 0; x < small.width; ++x) {
+      const std::size_t from =
+          (std::size_t(y) * factor * image.width + std::size_t(x) * factor) * 4;
+      small.rgba.insert(small.rgba.end(), image.rgba.begin() + std::ptrdiff_t(from),
+                        image.rgba.begin() + std::ptrdiff_t(from + 4));
+    }
+  }
+  return small;
+}
+
+std::string bgra_pixel(const RgbaImage& image, int x, int y) {
+  const std::uint8_t* p = &image.rgba[(std::size_t(y) * image.width + x) * 4];
+  return {char(p[2]), char(p[1]), char(p[0]), char(p[3])};
+}
+
+// 32-bit BI_RGB, bottom-up: the fourth byte is alpha.
+std::string bmp32(const RgbaImage& image) {
+  const std::uint32_t data_size = std::uint32_t(image.width) * image.height * 4;
+  std::string bytes = "BM" + little_endian(54 + data_size, 4) + little_endian(0, 4) +
+                      little_endian(54, 4) + little_endian(40, 4) + little_endian(image.width, 4) +
+                      little_endian(image.height, 4) + little_endian(1, 2) + little_endian(32, 2) +
+                      little_endian(0, 4) + little_endian(data_size, 4) + std::string(16, '\0');
+  for (int y = image.height - 1; y >= 0; --y) {
+    for (int x = 0; x < image.width; ++x) bytes += bgra_pixel(image, x, y);
+  }
+  return bytes;
+}
+
+// 32-bit true colour, run-length encoded (type 10) or not (type 2), top-down.
+std::string tga32(const RgbaImage& image, bool rle) {
+  std::string bytes(18, '\0');
+  bytes[2] = static_cast<char>(rle ? 10 : 2);
+  bytes.replace(12, 2, little_endian(image.width, 2));
+  bytes.replace(14, 2, little_endian(image.height, 2));
+  bytes[16] = 32;
+  bytes[17] = static_cast<char>(8 | 0x20);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width;) {
+      int run = 1;
+      while (rle && x + run < image.width && run < 128 &&
+             bgra_pixel(image, x + run, y) == bgra_pixel(image, x, y)) {
+        ++run;
+      }
+      if (rle) bytes += static_cast<char>(0x80 | (run - 1));
+      bytes += bgra_pixel(image, x, y);
+      x += run;
+    }
+  }
+  return bytes;
+}
+
+std::string webp_lossless(const RgbaImage& image) {
+  std::uint8_t* output = nullptr;
+  const std::size_t size = WebPEncodeLosslessRGBA(image.rgba.data(), image.width, image.height,
+                                                  image.width * 4, &output);
+  std::string bytes(reinterpret_cast<const char*>(output), size);
+  WebPFree(output);
+  return bytes;
+}
+
+std::vector<fs::path> make_poly_seeds(const fs::path& source, const fs::path& out) {
+  std::vector<fs::path> written;
+  std::vector<fs::path> polys = files_under(source / "samples" / "polygons", ".poly");
+  for (const fs::path& path : files_under(source / "tests" / "core" / "data", ".poly")) {
+    polys.push_back(path);
+  }
+  for (const fs::path& path : polys) {
+    if (fuzz::vertex_count(read_poly_file(path)) > fuzz::kMaxPolyVertices) continue;
+    written.push_back(out / path.filename());
+    fs::copy_file(path, written.back(), fs::copy_options::overwrite_existing);
+  }
+  return written;
+}
+
+std::vector<fs::path> make_image_seeds(const fs::path& source, const fs::path& out) {
+  std::vector<fs::path> written;
+  auto write = [&](const std::string& name, const std::string& bytes) {
+    written.push_back(out / name);
+    write_bytes(written.back(), bytes);
+  };
+  for (const fs::path& path : files_under(source / "samples" / "sprites", ".png")) {
+    const RgbaImage image = load_rgba(path, 1ull << 40);
+    const std::string stem = path.stem().string();
+    if (std::uint64_t(image.width) * image.height <= fuzz::kMaxImagePixels) {
+      write(stem + ".png", read_bytes(path));
+    }
+    const RgbaImage small = shrunk(image);
+    write(stem + ".small.png",
+          preview_detail::encode_png(small.rgba.data(), small.width, small.height, 4));
+    write(stem + ".bmp", bmp32(small));
+    write(stem + ".tga", tga32(small, false));
+    write(stem + ".rle.tga", tga32(small, true));
+    write(stem + ".webp", webp_lossless(small));
+  }
+  return written;
+}
+
+void cook_bundle(const std::vector<fs::path>& inputs, const fs::path& out, Settings settings) {
+  try {
+    write_output(cook(inputs, settings), out, settings);
+  } catch (const InputError&) {
+    // A seed image that traces to nothing cookable gives no bundle; the others are enough.
+  }
+}
+
+void make_bundle_seeds(const std::vector<fs::path>& polys, const std::vector<fs::path>& images,
+                       const fs::path& out) {
+  Settings settings;
+  settings.threads = 1;
+  for (const fs::path& poly : polys) {
+    Settings relative = settings;
+    relative.tau = Tolerance::parse("2%");
+    cook_bundle({poly}, out / (poly.stem().string() + ".hcb"), relative);
+  }
+  std::vector<fs::path> pngs;
+  for (const fs::path& image : images) {
+    if (image.extension() != ".png" || image.stem().extension() != ".small") continue;
+    pngs.push_back(image);
+    cook_bundle({image}, out / (image.stem().stem().string() + ".hcb"), settings);
+  }
+  Settings rich = settings;
+  rich.lods = {Tolerance::parse("4"), Tolerance::parse("8")};
+  rich.physics = PhysicsProperties{2.5f, 0.4f, 0.1f, true, 0x0002, 0x00FD};
+  rich.pixels_per_unit = 32;
+  rich.y_down = true;
+  rich.measure = "sp";
+  pngs.resize(std::min<std::size_t>(pngs.size(), 4));
+  if (!polys.empty()) pngs.push_back(polys.front());
+  cook_bundle(pngs, out / "several_assets_levels_physics.hcb", rich);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: fuzz_make_seeds SOURCE_DIR OUT_DIR\n");
+    return 1;
+  }
+  const fs::path source = argv[1], out = argv[2];
+  try {
+    for (const char* corpus : {"poly", "image", "bundle"}) fs::create_directories(out / corpus);
+    const std::vector<fs::path> polys = make_poly_seeds(source, out / "poly");
+    const std::vector<fs::path> images = make_image_seeds(source, out / "image");
+    make_bundle_seeds(polys, images, out / "bundle");
+    for (const char* corpus : {"poly", "image", "bundle"}) {
+      const auto count = std::distance(fs::directory_iterator(out / corpus), {});
+      std::printf("fuzz_make_seeds: %s: %td seeds\n", corpus, count);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fuzz_make_seeds: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
