@@ -489,7 +489,10 @@ void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
   std::vector<CookedAsset> kept;
   std::map<std::filesystem::path, bool> sheet_has_cells;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    const bool empty_cell = files[i].sheet && result.assets[i].regions.empty();
+    // By its hulls: the regions may be freed already (Settings::keep_outlines).
+    const CookedAsset& asset = result.assets[i];
+    const bool empty_cell =
+        files[i].sheet && (asset.levels.empty() || asset.levels.front().hulls.empty());
     if (files[i].sheet) sheet_has_cells[files[i].path] |= !empty_cell;
     if (!empty_cell) kept.push_back(std::move(result.assets[i]));
   }
