@@ -47,9 +47,14 @@ class GltfInspect : public ::testing::Test {
   std::filesystem::path directory_;
 };
 
-// The written assets' hulls as inspect --json prints them: each vertex the float of the cooked
-// double (version 2) or the double itself (version 1, `exact`).
-void expect_hulls(const json& root, const std::vector<CookedAsset>& assets, bool exact) {
+// How inspect --json's vertices match the cooked ones.
+enum class Precision {
+  exact,     // version 1: the doubles themselves
+  as_float,  // version 2: the floats of the doubles
+  on_grid,   // version 2 with --meshopt: within half the asset's grid step
+};
+
+void expect_hulls(const json& root, const std::vector<CookedAsset>& assets, Precision precision) {
   EXPECT_EQ(root["hullcook"], 1);
   ASSERT_EQ(root["assets"].size(), assets.size());
   for (std::size_t a = 0; a < assets.size(); ++a) {
@@ -68,9 +73,13 @@ void expect_hulls(const json& root, const std::vector<CookedAsset>& assets, bool
         for (std::size_t v = 0; v < hull.size(); ++v) {
           const Vec2 p{hull[v][0].get<double>(), hull[v][1].get<double>()};
           const Vec2 q = level.hulls[h][v];
-          if (exact) {
+          if (precision == Precision::exact) {
             EXPECT_EQ(p.x, q.x);
             EXPECT_EQ(p.y, q.y);
+          } else if (precision == Precision::on_grid) {
+            const double half_step = 0.5 * test::largest_meshopt_step(assets[a]) * (1 + 1e-9);
+            EXPECT_LE(std::abs(p.x - q.x), half_step);
+            EXPECT_LE(std::abs(p.y - q.y), half_step);
           } else {
             EXPECT_EQ(static_cast<float>(p.x), static_cast<float>(q.x));
             EXPECT_EQ(static_cast<float>(p.y), static_cast<float>(q.y));
@@ -87,17 +96,20 @@ void expect_hulls(const json& root, const std::vector<CookedAsset>& assets, bool
   }
 }
 
-// --json gives back every level's hulls (as floats), for text, binary and Draco files.
+// --json gives back every level's hulls (as floats, or on the grid of --meshopt), for text and
+// binary files, plain, Draco and meshopt.
 TEST_F(GltfInspect, JsonReproducesTheHulls) {
   const std::vector<CookedAsset> assets = test::all_sample_assets();
   for (bool binary : {false, true}) {
-    for (bool draco : {false, true}) {
+    for (const std::string compression : {"", "_draco", "_meshopt"}) {
+      const GltfOptions options{
+          .binary = binary, .draco = compression == "_draco", .meshopt = compression == "_meshopt"};
       auto path =
-          write(std::string("samples") + (draco ? "_draco" : "") + (binary ? ".glb" : ".gltf"),
-                write_gltf(assets, {.binary = binary, .draco = draco}));
+          write("samples" + compression + (binary ? ".glb" : ".gltf"), write_gltf(assets, options));
       InspectRun run = inspect(path, true);
       ASSERT_EQ(run.code, 0) << run.err;
-      expect_hulls(json::parse(run.out), assets, false);
+      expect_hulls(json::parse(run.out), assets,
+                   options.meshopt ? Precision::on_grid : Precision::as_float);
     }
   }
 }
@@ -111,7 +123,7 @@ TEST_F(GltfInspect, Version1FilesAreStillRead) {
     InspectRun run =
         inspect(std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/gltf/data" / name, true);
     ASSERT_EQ(run.code, 0) << run.err;
-    expect_hulls(json::parse(run.out), assets, true);
+    expect_hulls(json::parse(run.out), assets, Precision::exact);
   }
 }
 
@@ -193,6 +205,13 @@ TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
     EXPECT_NE(run.err.find(name), std::string::npos) << name << ": " << run.err;
     EXPECT_EQ(run.out, "") << name;
   }
+  // A meshopt file whose compressed data is cut short.
+  json meshopt = json::parse(write_gltf({test::physics_asset()}, {.meshopt = true}));
+  meshopt["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 5;
+  InspectRun cut = inspect(write("meshopt_cut.gltf", meshopt.dump()), false);
+  EXPECT_EQ(cut.code, 2);
+  EXPECT_NE(cut.err.find("meshopt_cut.gltf"), std::string::npos) << cut.err;
+  EXPECT_NE(cut.err.find("does not decode"), std::string::npos) << cut.err;
   InspectRun missing = inspect(directory_ / "missing.glb", true);
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("missing.glb"), std::string::npos);

@@ -59,7 +59,12 @@ void add_cook(CLI::App& root, CommandAction& action) {
                   "Output file; the writer is picked by extension: .hcb, "
                   ".gltf, .glb, .json");
   app->add_option("--json", command->json, "Also write the debug JSON here");
-  app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
+  auto* draco =
+      app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
+  app->add_flag("--meshopt", command->settings.meshopt,
+                "Compress glTF buffers with EXT_meshopt_compression (16-bit coordinates, as "
+                "gltfpack does)")
+      ->excludes(draco);
   app->add_flag("-q,--quiet", command->quiet,
                 "Print no per-asset table (warnings still go to stderr)");
   add_cook_options(*app, command->settings, command->options);

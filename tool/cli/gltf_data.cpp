@@ -1,5 +1,7 @@
 #include "gltf_data.h"
 
+#include <meshoptimizer.h>
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -172,6 +174,58 @@ GltfData::GltfData(const json& root, std::string glb_bin) : root_(root) {
   }
 }
 
+std::string_view GltfData::view_bytes(std::size_t index, const std::string& where_in) const {
+  const json& view = root_["bufferViews"][index];
+  const std::string where = where_in + ": bufferView " + std::to_string(index);
+  const json* source = &view;
+  auto compressed = view.find("extensions");
+  const bool meshopt = compressed != view.end() && compressed->is_object() &&
+                       compressed->contains("EXT_meshopt_compression");
+  if (meshopt) {
+    source = &(*compressed)["EXT_meshopt_compression"];
+    if (!source->is_object()) throw BadGltf(where + ": EXT_meshopt_compression is not an object");
+  }
+  const std::size_t offset = size_property(*source, "byteOffset", 0, where);
+  const std::size_t length = size_property(*source, "byteLength", 0, where);
+  if (!source->contains("buffer") || !(*source)["buffer"].is_number_unsigned() ||
+      (*source)["buffer"].get<std::size_t>() >= buffers_.size()) {
+    throw BadGltf(where + ": names no buffer");
+  }
+  const std::string& buffer = buffers_[(*source)["buffer"].get<std::size_t>()];
+  if (offset > buffer.size() || length > buffer.size() - offset) {
+    throw BadGltf(where + ": runs past the end of its buffer");
+  }
+  const std::string_view stored(buffer.data() + offset, length);
+  if (!meshopt) return stored;
+
+  if (auto it = decoded_.find(index); it != decoded_.end()) return it->second;
+  const std::size_t count = size_property(*source, "count", 0, where);
+  const std::size_t stride = size_property(*source, "byteStride", 0, where);
+  const std::size_t decoded_length = size_property(view, "byteLength", 0, where);
+  const std::string mode = source->value("mode", "");
+  if (source->contains("filter") && (*source)["filter"] != "NONE") {
+    throw BadGltf(where + ": meshopt filters are not read");
+  }
+  if (stride == 0 || stride > 256 || count > (std::size_t{1} << 28) ||
+      count * stride != decoded_length) {
+    throw BadGltf(where + ": meshopt count * byteStride does not match its byteLength");
+  }
+  std::string out(decoded_length, '\0');
+  const auto* input = reinterpret_cast<const unsigned char*>(stored.data());
+  int status = -1;
+  if (mode == "ATTRIBUTES" && stride % 4 == 0) {
+    status = meshopt_decodeVertexBuffer(out.data(), count, stride, input, stored.size());
+  } else if (mode == "TRIANGLES" && (stride == 2 || stride == 4) && count % 3 == 0) {
+    status = meshopt_decodeIndexBuffer(out.data(), count, stride, input, stored.size());
+  } else if (mode == "INDICES" && (stride == 2 || stride == 4)) {
+    status = meshopt_decodeIndexSequence(out.data(), count, stride, input, stored.size());
+  } else {
+    throw BadGltf(where + ": unknown meshopt mode or byteStride");
+  }
+  if (status != 0) throw BadGltf(where + ": the meshopt data does not decode");
+  return decoded_.emplace(index, std::move(out)).first->second;
+}
+
 AccessorData GltfData::accessor(const json& index, const std::string& where_in) const {
   const json& accessor = element(root_, "accessors", index, where_in);
   const std::string where = where_in + " (accessor " + index.dump() + ")";
@@ -193,16 +247,8 @@ AccessorData GltfData::accessor(const json& index, const std::string& where_in) 
   if (count == 0) throw BadGltf(where + ": count 0");
   if (!accessor.contains("bufferView")) throw BadGltf(where + ": no bufferView");
   const json& view = element(root_, "bufferViews", accessor["bufferView"], where);
-  const std::size_t view_offset = size_property(view, "byteOffset", 0, where + ".bufferView");
-  const std::size_t view_length = size_property(view, "byteLength", 0, where + ".bufferView");
-  if (!view.contains("buffer") || !view["buffer"].is_number_unsigned() ||
-      view["buffer"].get<std::size_t>() >= buffers_.size()) {
-    throw BadGltf(where + ": its bufferView names no buffer");
-  }
-  const std::string& buffer = buffers_[view["buffer"].get<std::size_t>()];
-  if (view_offset > buffer.size() || view_length > buffer.size() - view_offset) {
-    throw BadGltf(where + ": its bufferView runs past the end of its buffer");
-  }
+  const std::string_view bytes = view_bytes(accessor["bufferView"].get<std::size_t>(), where);
+  const std::size_t view_length = bytes.size();
   const std::size_t element_size = size * data.components;
   const std::size_t stride = size_property(view, "byteStride", element_size, where + ".bufferView");
   const std::size_t offset = size_property(accessor, "byteOffset", 0, where);
@@ -212,7 +258,7 @@ AccessorData GltfData::accessor(const json& index, const std::string& where_in) 
     throw BadGltf(where + ": its data runs past the end of its bufferView");
   }
   data.values.reserve(count * data.components);
-  const char* start = buffer.data() + view_offset + offset;
+  const char* start = bytes.data() + offset;
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t c = 0; c < data.components; ++c) {
       const double value = read_component(start + i * stride + c * size, data.component_type);

@@ -1,13 +1,16 @@
 // Reading a glTF file's binary data for `hullcook inspect`: the buffers of a .gltf (base64 data:
-// URIs) or a .glb (its BIN chunk), and accessors into them, checked against every bound so that a
-// damaged file gives a message and never a read past the end.
+// URIs) or a .glb (its BIN chunk), bufferViews compressed with EXT_meshopt_compression, and
+// accessors into them, checked against every bound so that a damaged file gives a message and
+// never a read past the end.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hullcook::cli {
@@ -34,8 +37,12 @@ class GltfData {
   AccessorData accessor(const nlohmann::json& index, const std::string& where) const;
 
  private:
+  // The bytes of bufferView `index` and their size; decodes (once) a compressed one.
+  std::string_view view_bytes(std::size_t index, const std::string& where) const;
+
   const nlohmann::json& root_;
   std::vector<std::string> buffers_;
+  mutable std::map<std::size_t, std::string> decoded_;
 };
 
 }  // namespace hullcook::cli

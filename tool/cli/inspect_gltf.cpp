@@ -165,10 +165,35 @@ std::vector<Ring> json_hulls(const Fields& level) {
   return hulls;
 }
 
+// The asset node's translation and scale (x and y), which map quantized vertices (--meshopt) to
+// output units; identity when absent. A rotation or matrix is not hullcook's.
+struct NodeScaling {
+  Vec2 translation{0.0, 0.0};
+  Vec2 scale{1.0, 1.0};
+};
+
+NodeScaling node_scaling(const json& node, const std::string& where) {
+  NodeScaling scaling;
+  if (node.contains("rotation") || node.contains("matrix")) {
+    throw BadGltf(where + ": an asset node with a rotation or matrix");
+  }
+  const Fields fields(node, where);
+  auto triple = [&](const char* key) {
+    const json& value = fields.get(key);
+    if (!value.is_array() || value.size() != 3)
+      throw BadGltf(where + ": \"" + key + "\" is not 3 numbers");
+    return Vec2{fields.number_of(value[0], key), fields.number_of(value[1], key)};
+  };
+  if (node.contains("translation")) scaling.translation = triple("translation");
+  if (node.contains("scale")) scaling.scale = triple("scale");
+  return scaling;
+}
+
 // Version 2: the vertex count of each hull in the accessor "counts", and the vertices, hull after
-// hull, in the accessor "vertices" (x, y are its first two components); both absent for a level
-// without hulls.
-std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const GltfData& data) {
+// hull, in the accessor "vertices" (x, y are its first two components, mapped by the node's
+// translation and scale); both absent for a level without hulls.
+std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const GltfData& data,
+                               const NodeScaling& scaling) {
   std::vector<Ring> hulls;
   if (!level.contains("counts")) {
     if (level.contains("vertices"))
@@ -188,8 +213,10 @@ std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const Gl
     return hulls;
   }
   const AccessorData vertices = data.accessor(fields.get("vertices"), fields.where() + ".vertices");
-  if (vertices.component_type != 5126 || vertices.components < 2) {
-    throw BadGltf(fields.where() + ".vertices: not a FLOAT accessor of at least two components");
+  if ((vertices.component_type != 5126 && vertices.component_type != 5122) ||
+      vertices.components < 2) {
+    throw BadGltf(fields.where() +
+                  ".vertices: not a FLOAT or SHORT accessor of at least two components");
   }
   const std::size_t stored = vertices.values.size() / vertices.components;
   if (stored != total) {
@@ -200,8 +227,11 @@ std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const Gl
   for (double count : counts.values) {
     Ring& hull = hulls.emplace_back();
     for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i, ++next) {
-      hull.push_back({vertices.values[next * vertices.components],
-                      vertices.values[next * vertices.components + 1]});
+      const double x = vertices.values[next * vertices.components];
+      const double y = vertices.values[next * vertices.components + 1];
+      // Exact for the identity: 0 + 1 * x == x.
+      hull.push_back({scaling.translation.x + scaling.scale.x * x,
+                      scaling.translation.y + scaling.scale.y * y});
     }
   }
   return hulls;
@@ -237,14 +267,16 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
   asset.tau = fields.number("tau");
   asset.measure = fields.string("measure");
 
+  const NodeScaling scaling =
+      node_scaling(node, "node " + std::to_string(node_index) + " (\"" + asset.name + "\")");
   const json& levels = fields.array("levels");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
     const Fields level_fields(levels[l], fields.where() + ".levels[" + std::to_string(l) + "]");
     CookedLevel level;
     level.tau = level_fields.number("tau");
-    level.hulls =
-        version == 1 ? json_hulls(level_fields) : buffer_hulls(levels[l], level_fields, data);
+    level.hulls = version == 1 ? json_hulls(level_fields)
+                               : buffer_hulls(levels[l], level_fields, data, scaling);
     asset.levels.push_back(std::move(level));
   }
 
@@ -266,6 +298,7 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
 struct GltfContents {
   bool binary = false;
   bool draco = false;
+  bool meshopt = false;
   std::size_t bytes = 0;
   std::vector<CookedAsset> assets;
 };
@@ -289,6 +322,7 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   if (root.contains("extensionsUsed") && root["extensionsUsed"].is_array()) {
     for (const json& name : root["extensionsUsed"]) {
       if (name == "KHR_draco_mesh_compression") contents.draco = true;
+      if (name == "EXT_meshopt_compression") contents.meshopt = true;
     }
   }
   const GltfData data(root, std::move(bin));
@@ -324,9 +358,10 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
   }
   std::cout << path.string() << ": glTF 2.0 "
             << (contents.binary ? "binary (.glb)" : "text (.gltf)")
-            << (contents.draco ? " with Draco meshes" : "") << ", " << contents.bytes << " bytes, "
-            << contents.assets.size() << " assets, " << hulls << " hulls, " << vertices
-            << " hull vertices over all levels";
+            << (contents.draco ? " with Draco meshes" : "")
+            << (contents.meshopt ? " with meshopt compression" : "") << ", " << contents.bytes
+            << " bytes, " << contents.assets.size() << " assets, " << hulls << " hulls, "
+            << vertices << " hull vertices over all levels";
   if (vertices > 0) {
     std::cout << ", " << shortest(std::round(10.0 * contents.bytes / vertices) / 10.0)
               << " bytes per vertex";

@@ -16,6 +16,7 @@
 #include "hullcook/cook/gltf_writer.h"
 
 #include "gltf_draco.h"
+#include "gltf_meshopt.h"
 
 #include "hullcook/core/error.h"
 
@@ -39,6 +40,7 @@ using json = nlohmann::json;
 // glTF enumerations (glTF 2.0 specification, §5).
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
+constexpr int kComponentShort = 5122;
 constexpr int kComponentUnsignedByte = 5121;
 constexpr int kComponentUnsignedShort = 5123;
 constexpr int kComponentUnsignedInt = 5125;
@@ -53,6 +55,8 @@ constexpr const char* kKhrPhysics = "KHR_physics_rigid_bodies";
 constexpr const char* kOmiBody = "OMI_physics_body";
 constexpr const char* kOmiShape = "OMI_physics_shape";
 constexpr const char* kKhrDraco = "KHR_draco_mesh_compression";
+constexpr const char* kExtMeshopt = "EXT_meshopt_compression";
+constexpr const char* kKhrQuantization = "KHR_mesh_quantization";
 
 double float_area(const Ring& ring) {
   double twice = 0.0;
@@ -263,11 +267,22 @@ class Document {
 
   const GltfOptions& options() const { return options_; }
 
-  // Appends the accessor's data to its kind's bufferView (at a 4-byte aligned offset); returns the
-  // accessor's index. The bufferView's index is set when the buffer is laid out (finish()).
+  // The index component type of the whole document with --meshopt (the compressed index view
+  // decodes to one width), set before any asset is added.
+  void set_index_component(int component) { index_component_ = component; }
+  std::optional<int> index_component() const { return index_component_; }
+
+  // Appends the accessor's data to its kind's bufferView, at an offset aligned to its component
+  // size (4 for vertex attributes); returns the accessor's index. The bufferView's index is set
+  // when the buffer is laid out (finish()).
   int add_accessor(ViewKind kind, std::string_view data, json accessor) {
     std::string& view = views_[kind];
-    view.resize((view.size() + 3) & ~std::size_t{3}, '\0');
+    const int component = accessor["componentType"];
+    std::size_t align = component == kComponentUnsignedByte                                    ? 1
+                        : component == kComponentShort || component == kComponentUnsignedShort ? 2
+                                                                                               : 4;
+    if (kind == kPositions) align = 4;
+    view.resize((view.size() + align - 1) / align * align, '\0');
     if (!view.empty()) accessor["byteOffset"] = view.size();
     view.append(data);
     accessor_views_.push_back(kind);
@@ -327,13 +342,41 @@ class Document {
     };
     for (const std::string& blob : blobs_) add_view(blob);
     std::array<int, kViewKinds> view_index{};
+    std::size_t fallback_length = 0;  // the uncompressed size of the compressed views
     for (std::size_t kind = 0; kind < kViewKinds; ++kind) {
       if (views_[kind].empty()) continue;
-      view_index[kind] = add_view(views_[kind]);
+      const std::size_t stride = kind == kPositions ? (options_.meshopt ? 8 : 12)
+                                 : kind == kIndices
+                                     ? (index_component_ == kComponentUnsignedInt ? 4 : 2)
+                                 : kind == kPlanar ? 4
+                                                   : 1;
+      if (options_.meshopt && kind != kCounts) {
+        // Compressed into buffer 0; the view itself lies in the fallback buffer 1, which has no
+        // data: a reader must decode (the extension is required).
+        const MeshoptMode mode =
+            kind == kIndices ? MeshoptMode::triangles : MeshoptMode::attributes;
+        const std::string compressed = meshopt_compress(views_[kind], stride, mode);
+        view_index[kind] = add_view(compressed);
+        json& view = buffer_views.back();
+        json extension = {{"buffer", 0},
+                          {"byteLength", compressed.size()},
+                          {"byteStride", stride},
+                          {"count", views_[kind].size() / stride},
+                          {"mode", mode == MeshoptMode::triangles ? "TRIANGLES" : "ATTRIBUTES"}};
+        if (view.contains("byteOffset")) extension["byteOffset"] = view["byteOffset"];
+        fallback_length = (fallback_length + 3) & ~std::size_t{3};
+        view = {{"buffer", 1},
+                {"byteLength", views_[kind].size()},
+                {"extensions", {{kExtMeshopt, std::move(extension)}}}};
+        if (fallback_length > 0) view["byteOffset"] = fallback_length;
+        fallback_length += views_[kind].size();
+      } else {
+        view_index[kind] = add_view(views_[kind]);
+      }
       json& view = buffer_views.back();
       if (kind == kPositions) {
         view["target"] = kArrayBuffer;
-        view["byteStride"] = 12;  // several POSITION accessors share the view
+        view["byteStride"] = stride;  // several POSITION accessors share the view
       }
       if (kind == kIndices) view["target"] = kElementArrayBuffer;
     }
@@ -358,6 +401,10 @@ class Document {
       json buffer = {{"byteLength", buffer_.size()}};
       if (embed_buffer) buffer["uri"] = "data:application/octet-stream;base64," + base64(buffer_);
       root["buffers"] = json::array({std::move(buffer)});
+      if (fallback_length > 0) {
+        root["buffers"].push_back({{"byteLength", fallback_length},
+                                   {"extensions", {{kExtMeshopt, {{"fallback", true}}}}}});
+      }
     }
     json used = json::array();
     json required = json::array();
@@ -367,6 +414,15 @@ class Document {
       // extension's specification it is required.
       used.push_back(kKhrDraco);
       required.push_back(kKhrDraco);
+    }
+    if (fallback_length > 0) {
+      used.push_back(kExtMeshopt);
+      required.push_back(kExtMeshopt);
+    }
+    if (options_.meshopt && !meshes_.empty()) {
+      // SHORT positions: a reader without the extension would misread them.
+      used.push_back(kKhrQuantization);
+      required.push_back(kKhrQuantization);
     }
     if (!omi_shapes_.empty()) {
       used.push_back(kKhrPhysics);
@@ -388,6 +444,7 @@ class Document {
 
  private:
   GltfOptions options_;
+  std::optional<int> index_component_;
   std::array<std::string, kViewKinds> views_;
   std::vector<std::string> blobs_;
   std::string buffer_;
@@ -401,14 +458,54 @@ class Document {
 };
 
 // The mesh's primitive, uncompressed: a POSITION accessor (returned in `positions`) and indices.
-json plain_primitive(Document& document, const TriangleMesh& mesh, int& positions) {
-  auto [min, max] = bounds(mesh.positions);
-  positions = document.add_accessor(
-      kPositions,
-      {reinterpret_cast<const char*>(mesh.positions.data()), mesh.positions.size() * sizeof(float)},
-      position_accessor(mesh.positions.size() / 3, min, max));
-  const int component =
-      unsigned_component(static_cast<std::uint32_t>(mesh.positions.size() / 3 - 1), false);
+// The hulls' vertices on the grid, x and y per vertex; as POSITION data (`as_positions`) also
+// z = 0 and a pad, so that each vertex takes 8 bytes (vertex attributes are 4-byte aligned).
+std::vector<std::int16_t> quantized_vertices(const std::vector<Ring>& hulls,
+                                             const Quantization& grid, bool as_positions) {
+  std::vector<std::int16_t> values;
+  for (const Ring& hull : hulls) {
+    for (const Vec2& v : hull) {
+      values.push_back(grid.x(v.x));
+      values.push_back(grid.y(v.y));
+      if (as_positions) values.insert(values.end(), {0, 0});
+    }
+  }
+  return values;
+}
+
+template <typename T>
+std::string_view bytes_of(const std::vector<T>& values) {
+  return {reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)};
+}
+
+// The mesh's primitive, uncompressed or (with a grid) quantized for EXT_meshopt_compression: a
+// POSITION accessor (returned in `positions`) and indices.
+json plain_primitive(Document& document, const TriangleMesh& mesh, const std::vector<Ring>& hulls,
+                     const std::optional<Quantization>& grid, int& positions) {
+  const std::size_t vertex_count = mesh.positions.size() / 3;
+  if (grid) {
+    const std::vector<std::int16_t> values = quantized_vertices(hulls, *grid, true);
+    std::array<int, 3> min{}, max{};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      min[axis] = max[axis] = values[axis];
+      for (std::size_t i = axis; i < values.size(); i += 4) {
+        min[axis] = std::min<int>(min[axis], values[i]);
+        max[axis] = std::max<int>(max[axis], values[i]);
+      }
+    }
+    positions = document.add_accessor(kPositions, bytes_of(values),
+                                      {{"componentType", kComponentShort},
+                                       {"count", vertex_count},
+                                       {"type", "VEC3"},
+                                       {"min", min},
+                                       {"max", max}});
+  } else {
+    auto [min, max] = bounds(mesh.positions);
+    positions = document.add_accessor(kPositions, bytes_of(mesh.positions),
+                                      position_accessor(vertex_count, min, max));
+  }
+  const int component = document.index_component().value_or(
+      unsigned_component(static_cast<std::uint32_t>(vertex_count - 1), false));
   const int indices = document.add_accessor(
       kIndices, pack_unsigned(mesh.indices, component),
       {{"componentType", component}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
@@ -434,7 +531,8 @@ json draco_primitive(Document& document, const TriangleMesh& mesh, const std::st
 
 // A level's entry in the extras: its tau, and accessors for its hulls' vertex counts and their
 // vertices (x, y: the first two components), or none for what it does not have.
-json level_json(Document& document, const CookedLevel& level, std::optional<int> vertices) {
+json level_json(Document& document, const CookedLevel& level, std::optional<int> vertices,
+                const std::optional<Quantization>& grid) {
   json entry = {{"tau", level.tau}};
   if (level.hulls.empty()) return entry;
   PlanarLevel planar = planar_level(level);
@@ -445,6 +543,10 @@ json level_json(Document& document, const CookedLevel& level, std::optional<int>
       {{"componentType", component}, {"count", planar.counts.size()}, {"type", "SCALAR"}});
   if (vertices) {
     entry["vertices"] = *vertices;
+  } else if (!planar.xy.empty() && grid) {
+    entry["vertices"] = document.add_accessor(
+        kPlanar, bytes_of(quantized_vertices(level.hulls, *grid, false)),
+        {{"componentType", kComponentShort}, {"count", planar.xy.size() / 2}, {"type", "VEC2"}});
   } else if (!planar.xy.empty()) {
     entry["vertices"] = document.add_accessor(
         kPlanar,
@@ -506,6 +608,14 @@ int add_asset(Document& document, const CookedAsset& asset) {
   check_finite(asset);
   const int node_index = document.add_node({{"name", asset.name}});
   json extras = asset_extras(asset);
+  std::optional<Quantization> grid;
+  if (document.options().meshopt) {
+    // KHR_mesh_quantization: the node's transform maps the grid to output units, for the mesh
+    // and the extras' vertices alike.
+    grid = Quantization::of(asset);
+    document.node(node_index)["translation"] = {grid->origin.x, grid->origin.y, 0.0};
+    document.node(node_index)["scale"] = {grid->step, grid->step, grid->step};
+  }
   json levels = json::array();
   for (std::size_t l = 0; l < asset.levels.size(); ++l) {
     std::optional<int> vertices;
@@ -513,16 +623,18 @@ int add_asset(Document& document, const CookedAsset& asset) {
       const TriangleMesh mesh = flat_mesh(asset.levels[0].hulls, asset.name);
       if (!mesh.indices.empty()) {
         int positions = -1;
-        json primitive = document.options().draco ? draco_primitive(document, mesh, asset.name)
-                                                  : plain_primitive(document, mesh, positions);
-        // Uncompressed, the mesh's positions are the finest level's vertices (z = 0).
+        json primitive =
+            document.options().draco
+                ? draco_primitive(document, mesh, asset.name)
+                : plain_primitive(document, mesh, asset.levels[0].hulls, grid, positions);
+        // Without Draco, the mesh's positions are the finest level's vertices (z = 0).
         if (positions >= 0) vertices = positions;
         const int mesh_index = document.add_mesh(std::move(primitive));
         document.node(node_index)["mesh"] = mesh_index;
         add_colliders(document, asset, node_index, mesh_index);
       }
     }
-    levels.push_back(level_json(document, asset.levels[l], vertices));
+    levels.push_back(level_json(document, asset.levels[l], vertices, grid));
   }
   extras["levels"] = std::move(levels);
   document.node(node_index)["extras"] = {{"hullcook", std::move(extras)}};
@@ -557,7 +669,22 @@ std::string glb_container(const std::string& json_text, const std::string& bin) 
 }  // namespace
 
 std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options) {
+  if (options.draco && options.meshopt) {
+    throw UsageError("--draco and --meshopt compress the same meshes: give one of them");
+  }
   Document document(options);
+  if (options.meshopt) {
+    std::size_t largest = 0;
+    for (const CookedAsset& asset : assets) {
+      std::size_t vertices = 0;
+      if (!asset.levels.empty()) {
+        for (const Ring& hull : asset.levels.front().hulls) vertices += hull.size();
+      }
+      largest = std::max(largest, vertices);
+    }
+    document.set_index_component(largest < 0xFFFF ? kComponentUnsignedShort
+                                                  : kComponentUnsignedInt);
+  }
   std::vector<int> scene_nodes;
   scene_nodes.reserve(assets.size());
   for (const CookedAsset& asset : assets) scene_nodes.push_back(add_asset(document, asset));

@@ -56,6 +56,7 @@ struct Settings {
   // Output.
   std::optional<PhysicsProperties> physics;
   bool draco = false;
+  bool meshopt = false;  // glTF: EXT_meshopt_compression + KHR_mesh_quantization
   unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
 };
 

@@ -16,6 +16,11 @@ struct GltfOptions {
   // fallback, so the extension is listed in extensionsRequired). The 2D hulls in each node's
   // extras are never compressed and stay authoritative.
   bool draco = false;
+  // true: the buffer's views are compressed with EXT_meshopt_compression (as gltfpack does) and
+  // every coordinate is rounded to a 16-bit grid per asset (KHR_mesh_quantization; the asset
+  // node's translation and scale map the grid to output units), both extensions required.
+  // Exclusive with draco.
+  bool meshopt = false;
 };
 
 // The version of the extras schema written (docs/gltf-extras.md). Version 1 held the hulls as
