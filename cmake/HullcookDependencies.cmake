@@ -8,6 +8,8 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(WebP REQUIRED IMPORTED_TARGET libwebp)
 find_package(TinyGLTF REQUIRED)
 find_package(draco REQUIRED)
+# EXT_meshopt_compression (glTF --meshopt), libmeshoptimizer-dev.
+find_package(meshoptimizer REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(Threads REQUIRED)

@@ -47,45 +47,83 @@ class GltfInspect : public ::testing::Test {
   std::filesystem::path directory_;
 };
 
-// --json gives back every level's hulls exactly, for text, binary and Draco files.
-TEST_F(GltfInspect, JsonReproducesTheHulls) {
-  const std::vector<CookedAsset> assets = test::all_sample_assets();
-  for (bool binary : {false, true}) {
-    for (bool draco : {false, true}) {
-      auto path =
-          write(std::string("samples") + (draco ? "_draco" : "") + (binary ? ".glb" : ".gltf"),
-                write_gltf(assets, {.binary = binary, .draco = draco}));
-      InspectRun run = inspect(path, true);
-      ASSERT_EQ(run.code, 0) << run.err;
-      json root = json::parse(run.out);
-      EXPECT_EQ(root["hullcook"], 1);
-      ASSERT_EQ(root["assets"].size(), assets.size());
-      for (std::size_t a = 0; a < assets.size(); ++a) {
-        const json& written = root["assets"][a];
-        EXPECT_EQ(written["name"], assets[a].name);
-        EXPECT_EQ(written["measure"], assets[a].measure);
-        EXPECT_EQ(written["tau"].get<double>(), assets[a].tau);
-        ASSERT_EQ(written["levels"].size(), assets[a].levels.size());
-        for (std::size_t l = 0; l < assets[a].levels.size(); ++l) {
-          const CookedLevel& level = assets[a].levels[l];
-          ASSERT_EQ(written["levels"][l]["hulls"].size(), level.hulls.size());
-          for (std::size_t h = 0; h < level.hulls.size(); ++h) {
-            const json& hull = written["levels"][l]["hulls"][h];
-            ASSERT_EQ(hull.size(), level.hulls[h].size());
-            for (std::size_t v = 0; v < hull.size(); ++v) {
-              EXPECT_EQ(hull[v][0].get<double>(), level.hulls[h][v].x);
-              EXPECT_EQ(hull[v][1].get<double>(), level.hulls[h][v].y);
-            }
+// How inspect --json's vertices match the cooked ones.
+enum class Precision {
+  exact,     // version 1: the doubles themselves
+  as_float,  // version 2: the floats of the doubles
+  on_grid,   // version 2 with --meshopt: within half the asset's grid step
+};
+
+void expect_hulls(const json& root, const std::vector<CookedAsset>& assets, Precision precision) {
+  EXPECT_EQ(root["hullcook"], 1);
+  ASSERT_EQ(root["assets"].size(), assets.size());
+  for (std::size_t a = 0; a < assets.size(); ++a) {
+    const json& written = root["assets"][a];
+    EXPECT_EQ(written["name"], assets[a].name);
+    EXPECT_EQ(written["measure"], assets[a].measure);
+    EXPECT_EQ(written["tau"].get<double>(), assets[a].tau);
+    ASSERT_EQ(written["levels"].size(), assets[a].levels.size());
+    for (std::size_t l = 0; l < assets[a].levels.size(); ++l) {
+      const CookedLevel& level = assets[a].levels[l];
+      EXPECT_EQ(written["levels"][l]["tau"].get<double>(), level.tau);
+      ASSERT_EQ(written["levels"][l]["hulls"].size(), level.hulls.size());
+      for (std::size_t h = 0; h < level.hulls.size(); ++h) {
+        const json& hull = written["levels"][l]["hulls"][h];
+        ASSERT_EQ(hull.size(), level.hulls[h].size());
+        for (std::size_t v = 0; v < hull.size(); ++v) {
+          const Vec2 p{hull[v][0].get<double>(), hull[v][1].get<double>()};
+          const Vec2 q = level.hulls[h][v];
+          if (precision == Precision::exact) {
+            EXPECT_EQ(p.x, q.x);
+            EXPECT_EQ(p.y, q.y);
+          } else if (precision == Precision::on_grid) {
+            const double half_step = 0.5 * test::largest_meshopt_step(assets[a]) * (1 + 1e-9);
+            EXPECT_LE(std::abs(p.x - q.x), half_step);
+            EXPECT_LE(std::abs(p.y - q.y), half_step);
+          } else {
+            EXPECT_EQ(static_cast<float>(p.x), static_cast<float>(q.x));
+            EXPECT_EQ(static_cast<float>(p.y), static_cast<float>(q.y));
           }
-        }
-        EXPECT_EQ(written["pieces"].size(), assets[a].levels[0].hulls.size());
-        EXPECT_EQ(written.contains("physics"), assets[a].physics.has_value());
-        if (assets[a].physics) {
-          EXPECT_EQ(written["physics"]["friction"].get<float>(), assets[a].physics->friction);
-          EXPECT_EQ(written["physics"]["mask_bits"], assets[a].physics->mask_bits);
         }
       }
     }
+    EXPECT_EQ(written["pieces"].size(), assets[a].levels[0].hulls.size());
+    EXPECT_EQ(written.contains("physics"), assets[a].physics.has_value());
+    if (assets[a].physics) {
+      EXPECT_EQ(written["physics"]["friction"].get<float>(), assets[a].physics->friction);
+      EXPECT_EQ(written["physics"]["mask_bits"], assets[a].physics->mask_bits);
+    }
+  }
+}
+
+// --json gives back every level's hulls (as floats, or on the grid of --meshopt), for text and
+// binary files, plain, Draco and meshopt.
+TEST_F(GltfInspect, JsonReproducesTheHulls) {
+  const std::vector<CookedAsset> assets = test::all_sample_assets();
+  for (bool binary : {false, true}) {
+    for (const std::string compression : {"", "_draco", "_meshopt"}) {
+      const GltfOptions options{
+          .binary = binary, .draco = compression == "_draco", .meshopt = compression == "_meshopt"};
+      auto path =
+          write("samples" + compression + (binary ? ".glb" : ".gltf"), write_gltf(assets, options));
+      InspectRun run = inspect(path, true);
+      ASSERT_EQ(run.code, 0) << run.err;
+      expect_hulls(json::parse(run.out), assets,
+                   options.meshopt ? Precision::on_grid : Precision::as_float);
+    }
+  }
+}
+
+// Files of version 1 (hulls as JSON numbers, a prism mesh per hull), written by the version 1
+// writer (commit ec9da2f) from the assets below, are still read, exactly.
+TEST_F(GltfInspect, Version1FilesAreStillRead) {
+  const std::vector<CookedAsset> assets = {test::box_asset(), test::physics_asset(),
+                                           test::sensor_asset(), test::empty_asset()};
+  for (const char* name : {"v1.gltf", "v1_draco.glb"}) {
+    InspectRun run =
+        inspect(std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/gltf/data" / name, true);
+    ASSERT_EQ(run.code, 0) << run.err;
+    expect_hulls(json::parse(run.out), assets, Precision::exact);
   }
 }
 
@@ -97,7 +135,7 @@ TEST_F(GltfInspect, TextListsAssetsLevelsAndHulls) {
   EXPECT_NE(run.out.find("bytes per vertex"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("asset \"box\""), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("level 1: tau 0.5, 1 hulls, 3 vertices"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("(0.3333333333333333, -0.5)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(0.33333334, -0.5)"), std::string::npos) << run.out;
 }
 
 TEST_F(GltfInspect, DocumentWithoutAssetsHasNoAssets) {
@@ -120,7 +158,7 @@ TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
       {"version1.gltf", R"({"asset": {"version": "1.0"}})"},
       {"plain.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"name": "cube"}]})"},
       {"future.gltf",
-       R"({"asset": {"version": "2.0"}, "nodes": [{"extras": {"hullcook": {"version": 2}}}]})"},
+       R"({"asset": {"version": "2.0"}, "nodes": [{"extras": {"hullcook": {"version": 3}}}]})"},
       {"odd.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"extras": {"hullcook": {
           "version": 1, "source": "", "image_size": [0, 0], "pixels_per_unit": 1,
           "pivot": [0, 0], "transform": {"scale": 1, "origin": [0, 0], "flip_y": false},
@@ -132,6 +170,34 @@ TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
   for (std::size_t length = 0; length < gltf.size(); length += 1 + length / 16) {
     bad.emplace_back("prefix" + std::to_string(length) + ".gltf", gltf.substr(0, length));
   }
+  // Version 2 files whose accessors point where they must not.
+  const json good = json::parse(gltf);
+  auto broken = [&](const std::string& name, auto&& change) {
+    json copy = good;
+    change(copy);
+    bad.emplace_back(name, copy.dump());
+  };
+  broken("no_accessor.gltf",
+         [](json& root) { root["nodes"][0]["extras"]["hullcook"]["levels"][0]["counts"] = 999; });
+  broken("counts_float.gltf", [](json& root) {
+    root["nodes"][0]["extras"]["hullcook"]["levels"][0]["counts"] =
+        root["nodes"][0]["extras"]["hullcook"]["levels"][0]["vertices"];
+  });
+  broken("too_many.gltf", [](json& root) {
+    const int vertices = root["nodes"][0]["extras"]["hullcook"]["levels"][0]["vertices"];
+    root["accessors"][vertices]["count"] = 100000;
+  });
+  broken("mismatch.gltf", [](json& root) {
+    const int vertices = root["nodes"][0]["extras"]["hullcook"]["levels"][0]["vertices"];
+    root["accessors"][vertices]["count"] = 1;
+  });
+  broken("short_buffer.gltf", [](json& root) { root["buffers"][0]["byteLength"] = 1 << 20; });
+  broken("view_past_end.gltf", [](json& root) { root["bufferViews"][0]["byteOffset"] = 1 << 20; });
+  broken("external.gltf", [](json& root) { root["buffers"][0]["uri"] = "hulls.bin"; });
+  broken("sparse.gltf", [](json& root) {
+    const int counts = root["nodes"][0]["extras"]["hullcook"]["levels"][0]["counts"];
+    root["accessors"][counts]["sparse"] = json::object();
+  });
   for (const auto& [name, bytes] : bad) {
     auto path = write(name, bytes);
     InspectRun run = inspect(path, false);
@@ -139,6 +205,13 @@ TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
     EXPECT_NE(run.err.find(name), std::string::npos) << name << ": " << run.err;
     EXPECT_EQ(run.out, "") << name;
   }
+  // A meshopt file whose compressed data is cut short.
+  json meshopt = json::parse(write_gltf({test::physics_asset()}, {.meshopt = true}));
+  meshopt["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 5;
+  InspectRun cut = inspect(write("meshopt_cut.gltf", meshopt.dump()), false);
+  EXPECT_EQ(cut.code, 2);
+  EXPECT_NE(cut.err.find("meshopt_cut.gltf"), std::string::npos) << cut.err;
+  EXPECT_NE(cut.err.find("does not decode"), std::string::npos) << cut.err;
   InspectRun missing = inspect(directory_ / "missing.glb", true);
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("missing.glb"), std::string::npos);

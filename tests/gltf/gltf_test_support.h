@@ -1,11 +1,16 @@
 // Reading back what the glTF writer wrote, independently of the writer's code.
 #pragma once
 
+#include <gtest/gtest.h>
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace hullcook::test {
 
@@ -75,6 +80,94 @@ inline std::string decode_base64(std::string_view text) {
     }
   }
   return out;
+}
+
+// The JSON of a written file, and its (first) buffer's bytes.
+struct Parsed {
+  nlohmann::json root;
+  std::string buffer;
+};
+
+inline Parsed parse(const std::string& bytes, bool binary) {
+  Parsed parsed;
+  if (binary) {
+    GlbChunks chunks = split_glb(bytes);
+    parsed.root = nlohmann::json::parse(chunks.json);
+    parsed.buffer = chunks.bin;
+  } else {
+    parsed.root = nlohmann::json::parse(bytes);
+    if (parsed.root.contains("buffers")) {
+      std::string uri = parsed.root["buffers"][0]["uri"];
+      const std::string prefix = "data:application/octet-stream;base64,";
+      EXPECT_EQ(uri.rfind(prefix, 0), 0u);
+      parsed.buffer = decode_base64(uri.substr(prefix.size()));
+    }
+  }
+  if (parsed.root.contains("buffers")) {
+    std::size_t length = parsed.root["buffers"][0]["byteLength"];
+    EXPECT_LE(length, parsed.buffer.size());
+    EXPECT_LT(parsed.buffer.size() - length, 4u);  // at most the GLB chunk's padding
+  }
+  return parsed;
+}
+
+// A bufferView's bytes; one compressed with EXT_meshopt_compression is decoded by
+// meshoptimizer's own decoder (the reference implementation of the extension).
+inline std::string view_bytes(const Parsed& parsed, const nlohmann::json& view) {
+  if (!view.contains("extensions")) {
+    EXPECT_EQ(view["buffer"], 0);
+    return parsed.buffer.substr(view.value("byteOffset", std::size_t{0}), view["byteLength"]);
+  }
+  const nlohmann::json& meshopt = view["extensions"]["EXT_meshopt_compression"];
+  EXPECT_EQ(meshopt["buffer"], 0);
+  const std::size_t count = meshopt["count"], stride = meshopt["byteStride"];
+  EXPECT_EQ(count * stride, view["byteLength"].get<std::size_t>());
+  const auto* data = reinterpret_cast<const unsigned char*>(parsed.buffer.data()) +
+                     meshopt.value("byteOffset", std::size_t{0});
+  const std::size_t size = meshopt["byteLength"];
+  std::string out(count * stride, '\0');
+  const int status = meshopt["mode"] == "TRIANGLES"
+                         ? meshopt_decodeIndexBuffer(out.data(), count, stride, data, size)
+                         : meshopt_decodeVertexBuffer(out.data(), count, stride, data, size);
+  EXPECT_EQ(status, 0) << "meshopt decoding failed";
+  return out;
+}
+
+// An accessor's values read straight from the buffer by the glTF rules (no writer code).
+inline std::vector<double> accessor_values(const Parsed& parsed, const nlohmann::json& index) {
+  const nlohmann::json& accessor = parsed.root["accessors"][index.get<std::size_t>()];
+  const nlohmann::json& view =
+      parsed.root["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+  const std::string bytes = view_bytes(parsed, view);
+  const int component = accessor["componentType"];
+  const std::size_t size = component == 5121 ? 1 : component == 5122 || component == 5123 ? 2 : 4;
+  const std::string type = accessor["type"];
+  const std::size_t components = type == "SCALAR" ? 1 : type == "VEC2" ? 2 : 3;
+  const std::size_t stride = view.value("byteStride", size * components);
+  const std::size_t start = accessor.value("byteOffset", std::size_t{0});
+  const std::size_t count = accessor["count"];
+  EXPECT_EQ((view.value("byteOffset", std::size_t{0}) + start) % size, 0u);
+  EXPECT_LE(start + (count - 1) * stride + size * components, bytes.size());
+  std::vector<double> values;
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t c = 0; c < components; ++c) {
+      const char* at = bytes.data() + start + i * stride + c * size;
+      if (component == 5126) {
+        float v;
+        std::memcpy(&v, at, 4);
+        values.push_back(v);
+      } else if (component == 5122) {
+        std::int16_t v;
+        std::memcpy(&v, at, 2);
+        values.push_back(v);
+      } else {
+        std::uint32_t v = 0;
+        std::memcpy(&v, at, size);  // little-endian host, as the build machines are
+        values.push_back(v);
+      }
+    }
+  }
+  return values;
 }
 
 }  // namespace hullcook::test

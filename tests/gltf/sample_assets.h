@@ -2,8 +2,11 @@
 #pragma once
 
 #include "hullcook/cook/asset.h"
+#include "hullcook/cook/cook.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -90,6 +93,43 @@ inline CookedAsset empty_asset() {
 
 inline std::vector<CookedAsset> all_sample_assets() {
   return {box_asset(), many_hulls_asset(), physics_asset(), sensor_asset(), empty_asset()};
+}
+
+// samples/sprites cooked at --tau 2 --ppu 32 with the given extra levels (the figures of issue 20
+// are without; scripts/cook-samples adds 8 and 0.5).
+inline std::vector<CookedAsset> sample_sprites(std::vector<Tolerance> lods = {}) {
+  Settings settings;
+  settings.tau = Tolerance{2.0, false};
+  settings.lods = std::move(lods);
+  settings.pixels_per_unit = 32;
+  return cook({std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites"}, settings).assets;
+}
+
+inline std::size_t vertex_count(const std::vector<CookedAsset>& assets) {
+  std::size_t vertices = 0;
+  for (const CookedAsset& asset : assets) {
+    for (const CookedLevel& level : asset.levels) {
+      for (const Ring& hull : level.hulls) vertices += hull.size();
+    }
+  }
+  return vertices;
+}
+
+// The grid step --meshopt may use at most: the bundle's (formats/SPEC.md §9), with the asset's
+// whole extent in place of the largest hull's.
+inline double largest_meshopt_step(const CookedAsset& asset) {
+  double min_x = 1e300, min_y = 1e300, max_x = -1e300, max_y = -1e300;
+  for (const CookedLevel& level : asset.levels) {
+    for (const Ring& hull : level.hulls) {
+      for (const Vec2& v : hull) {
+        min_x = std::min(min_x, v.x), max_x = std::max(max_x, v.x);
+        min_y = std::min(min_y, v.y), max_y = std::max(max_y, v.y);
+      }
+    }
+  }
+  return std::max({std::sqrt(2.0) * 0.01 * asset.levels.front().tau,
+                   std::sqrt(2.0) / (64.0 * asset.pixels_per_unit),
+                   std::max(max_x - min_x, max_y - min_y) / 65000.0});
 }
 
 }  // namespace hullcook::test

@@ -1,6 +1,6 @@
 // Runs the Khronos glTF validator (npm package gltf-validator) over every .gltf/.glb file of a
 // directory. Prints each file's error/warning/info counts and its errors and warnings; exits 1 if
-// any file has an error, or if there is no file at all.
+// any file has an error or a warning, or if there is no file at all.
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -54,7 +54,7 @@ async function main() {
     warnings += issues.numWarnings;
   }
   console.log(`${files.length} files: ${errors} errors, ${warnings} warnings`);
-  return errors === 0 ? 0 : 1;
+  return errors === 0 && warnings === 0 ? 0 : 1;
 }
 
 main().then((code) => process.exit(code), (error) => {

@@ -1,24 +1,13 @@
-// Writes the hand-made sample assets and the cooked sample sprites as .gltf, .glb and Draco
-// .glb/.gltf files into a directory, for the Khronos glTF validator run (run_validator.sh).
+// Writes the hand-made sample assets and the cooked sample sprites as .gltf and .glb files, plain,
+// Draco and meshopt, into a directory, for the Khronos glTF validator run (run_validator.sh).
 #include "sample_assets.h"
 
-#include "hullcook/cook/cook.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/cook/output_file.h"
 
 #include <exception>
 #include <filesystem>
 #include <iostream>
-
-// Every sample sprite, cooked as scripts/cook-samples does: real outlines, three levels.
-std::vector<hullcook::CookedAsset> sprites_cooked_like_cook_samples() {
-  hullcook::Settings settings;
-  settings.tau = hullcook::Tolerance{2.0, false};
-  settings.lods = {hullcook::Tolerance{8.0, false}, hullcook::Tolerance{0.5, false}};
-  settings.pixels_per_unit = 32;
-  return hullcook::cook({std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites"}, settings)
-      .assets;
-}
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -39,15 +28,17 @@ int main(int argc, char** argv) {
         {"physics", {test::physics_asset(), test::sensor_asset()}},
         {"empty", {test::empty_asset()}},
         {"nothing", {}},
-        {"sprites", sprites_cooked_like_cook_samples()},
+        // Every sample sprite, cooked as scripts/cook-samples does: real outlines, three levels.
+        {"sprites", test::sample_sprites({Tolerance{8.0, false}, Tolerance{0.5, false}})},
     };
     for (const Set& set : sets) {
-      for (bool draco : {false, true}) {
+      for (const char* compression : {"", "_draco", "_meshopt"}) {
         for (bool binary : {false, true}) {
-          std::string name =
-              std::string(set.name) + (draco ? "_draco" : "") + (binary ? ".glb" : ".gltf");
-          write_file_atomically(directory / name,
-                                write_gltf(set.assets, {.binary = binary, .draco = draco}));
+          const GltfOptions options{.binary = binary,
+                                    .draco = compression == std::string("_draco"),
+                                    .meshopt = compression == std::string("_meshopt")};
+          std::string name = std::string(set.name) + compression + (binary ? ".glb" : ".gltf");
+          write_file_atomically(directory / name, write_gltf(set.assets, options));
         }
       }
     }

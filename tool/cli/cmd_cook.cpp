@@ -93,7 +93,12 @@ void add_cook(CLI::App& root, CommandAction& action) {
                   "(images, physics sidecars) and directory searched");
   app->add_option("--report", command->report,
                   "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes, ms)");
-  app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
+  auto* draco =
+      app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
+  app->add_flag("--meshopt", command->settings.meshopt,
+                "Compress glTF buffers with EXT_meshopt_compression (16-bit coordinates, as "
+                "gltfpack does)")
+      ->excludes(draco);
   app->add_flag("-q,--quiet", command->quiet,
                 "Print no per-asset table (warnings still go to stderr)");
   add_cook_options(*app, command->settings, command->options);

@@ -24,6 +24,7 @@ struct LinkCommand {
   std::string depfile;
   std::string report;
   bool draco = false;
+  bool meshopt = false;
   bool quiet = false;
 };
 
@@ -64,7 +65,10 @@ void add_link(CLI::App& root, CommandAction& action) {
                   "Also write a Make/Ninja depfile here: the outputs depend on the fragments");
   app->add_option("--report", command->report,
                   "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes)");
-  app->add_flag("--draco", command->draco, "Compress glTF meshes with Draco");
+  auto* draco = app->add_flag("--draco", command->draco, "Compress glTF meshes with Draco");
+  app->add_flag("--meshopt", command->meshopt,
+                "Compress glTF buffers with EXT_meshopt_compression (16-bit coordinates)")
+      ->excludes(draco);
   app->add_flag("-q,--quiet", command->quiet, "Print nothing on success");
   app->callback([command, &action] {
     action = [command] {
@@ -83,6 +87,7 @@ void add_link(CLI::App& root, CommandAction& action) {
       const CookResult result = link_fragments(fragments);
       Settings settings;
       settings.draco = command->draco;
+      settings.meshopt = command->meshopt;
       auto files = output_files(result, outputs, settings, fragments);
       if (!command->depfile.empty()) {
         files.emplace_back(command->depfile, depfile_text(outputs, fragments));

@@ -1,5 +1,7 @@
 // `hullcook inspect FILE.gltf|FILE.glb`: reads the hulls back from the asset nodes' extras
 // (docs/gltf-extras.md), the canonical data; the meshes are only a mirror and are not read.
+// Version 1 of the extras holds the hulls as JSON numbers, version 2 as accessors into the buffer.
+#include "gltf_data.h"
 #include "inspect.h"
 
 #include "hullcook/cook/asset.h"
@@ -25,12 +27,7 @@ namespace {
 
 using json = nlohmann::json;
 
-constexpr int kExtrasVersion = 1;  // the newest extras schema this reader knows
-
-// The file is not a readable hullcook glTF; the message says why.
-struct BadGltf : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+constexpr int kExtrasVersion = 2;  // the newest extras schema this reader knows
 
 std::string shortest(double value) {
   std::array<char, 32> text{};
@@ -62,8 +59,9 @@ std::string read_file(const std::filesystem::path& path) {
   return std::move(content).str();
 }
 
-// The JSON text of a .gltf, or of a .glb's JSON chunk after checking the container.
-std::string json_text(const std::string& bytes, bool& binary) {
+// The JSON text of a .gltf, or of a .glb's JSON chunk after checking the container; `bin` gets
+// the .glb's BIN chunk, if any.
+std::string json_text(const std::string& bytes, bool& binary, std::string& bin) {
   binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   if (!binary) return bytes;
   if (bytes.size() < 20) throw BadGltf("truncated GLB: " + std::to_string(bytes.size()) + " bytes");
@@ -77,6 +75,14 @@ std::string json_text(const std::string& bytes, bool& binary) {
   const std::uint32_t chunk_length = read_u32(bytes, 12);
   if (read_u32(bytes, 16) != 0x4E4F534A) throw BadGltf("the first GLB chunk is not JSON");
   if (chunk_length > bytes.size() - 20) throw BadGltf("the GLB JSON chunk runs past the end");
+  const std::size_t bin_start = 20 + std::size_t{chunk_length};
+  if (bytes.size() - bin_start >= 8 && read_u32(bytes, bin_start + 4) == 0x004E4942) {
+    const std::uint32_t bin_length = read_u32(bytes, bin_start);
+    if (bin_length > bytes.size() - bin_start - 8) {
+      throw BadGltf("the GLB BIN chunk runs past the end");
+    }
+    bin = bytes.substr(bin_start + 8, bin_length);
+  }
   return bytes.substr(20, chunk_length);
 }
 
@@ -140,7 +146,99 @@ class Fields {
   std::string where_;
 };
 
-CookedAsset read_asset(const json& node, const json& extras, std::size_t node_index) {
+// Version 1: each hull a flat JSON array [x0, y0, x1, y1, ...].
+std::vector<Ring> json_hulls(const Fields& level) {
+  std::vector<Ring> hulls;
+  const json& flats = level.array("hulls");
+  for (std::size_t h = 0; h < flats.size(); ++h) {
+    const json& flat = flats[h];
+    const std::string key = "hulls[" + std::to_string(h) + "]";
+    if (!flat.is_array() || flat.size() % 2 != 0) {
+      throw BadGltf(level.where() + ": " + key + " is not a flat array of x, y pairs");
+    }
+    Ring hull;
+    for (std::size_t i = 0; i < flat.size(); i += 2) {
+      hull.push_back({level.number_of(flat[i], key), level.number_of(flat[i + 1], key)});
+    }
+    hulls.push_back(std::move(hull));
+  }
+  return hulls;
+}
+
+// The asset node's translation and scale (x and y), which map quantized vertices (--meshopt) to
+// output units; identity when absent. A rotation or matrix is not hullcook's.
+struct NodeScaling {
+  Vec2 translation{0.0, 0.0};
+  Vec2 scale{1.0, 1.0};
+};
+
+NodeScaling node_scaling(const json& node, const std::string& where) {
+  NodeScaling scaling;
+  if (node.contains("rotation") || node.contains("matrix")) {
+    throw BadGltf(where + ": an asset node with a rotation or matrix");
+  }
+  const Fields fields(node, where);
+  auto triple = [&](const char* key) {
+    const json& value = fields.get(key);
+    if (!value.is_array() || value.size() != 3)
+      throw BadGltf(where + ": \"" + key + "\" is not 3 numbers");
+    return Vec2{fields.number_of(value[0], key), fields.number_of(value[1], key)};
+  };
+  if (node.contains("translation")) scaling.translation = triple("translation");
+  if (node.contains("scale")) scaling.scale = triple("scale");
+  return scaling;
+}
+
+// Version 2: the vertex count of each hull in the accessor "counts", and the vertices, hull after
+// hull, in the accessor "vertices" (x, y are its first two components, mapped by the node's
+// translation and scale); both absent for a level without hulls.
+std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const GltfData& data,
+                               const NodeScaling& scaling) {
+  std::vector<Ring> hulls;
+  if (!level.contains("counts")) {
+    if (level.contains("vertices"))
+      throw BadGltf(fields.where() + ": \"vertices\" without \"counts\"");
+    return hulls;
+  }
+  const AccessorData counts = data.accessor(level["counts"], fields.where() + ".counts");
+  if (counts.components != 1 || counts.component_type == 5126 || counts.component_type == 5120 ||
+      counts.component_type == 5122) {
+    throw BadGltf(fields.where() + ".counts: not an unsigned integer SCALAR accessor");
+  }
+  std::size_t total = 0;
+  for (double count : counts.values) total += static_cast<std::size_t>(count);
+  if (total == 0) {
+    if (level.contains("vertices")) throw BadGltf(fields.where() + ": \"vertices\" for no vertex");
+    hulls.resize(counts.values.size());
+    return hulls;
+  }
+  const AccessorData vertices = data.accessor(fields.get("vertices"), fields.where() + ".vertices");
+  if ((vertices.component_type != 5126 && vertices.component_type != 5122) ||
+      vertices.components < 2) {
+    throw BadGltf(fields.where() +
+                  ".vertices: not a FLOAT or SHORT accessor of at least two components");
+  }
+  const std::size_t stored = vertices.values.size() / vertices.components;
+  if (stored != total) {
+    throw BadGltf(fields.where() + ": the counts add up to " + std::to_string(total) +
+                  " vertices but \"vertices\" has " + std::to_string(stored));
+  }
+  std::size_t next = 0;
+  for (double count : counts.values) {
+    Ring& hull = hulls.emplace_back();
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i, ++next) {
+      const double x = vertices.values[next * vertices.components];
+      const double y = vertices.values[next * vertices.components + 1];
+      // Exact for the identity: 0 + 1 * x == x.
+      hull.push_back({scaling.translation.x + scaling.scale.x * x,
+                      scaling.translation.y + scaling.scale.y * y});
+    }
+  }
+  return hulls;
+}
+
+CookedAsset read_asset(const json& node, const json& extras, std::size_t node_index,
+                       const GltfData& data) {
   CookedAsset asset;
   asset.name = node.contains("name") && node["name"].is_string() ? node["name"].get<std::string>()
                                                                  : std::string();
@@ -169,26 +267,16 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
   asset.tau = fields.number("tau");
   asset.measure = fields.string("measure");
 
+  const NodeScaling scaling =
+      node_scaling(node, "node " + std::to_string(node_index) + " (\"" + asset.name + "\")");
   const json& levels = fields.array("levels");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
     const Fields level_fields(levels[l], fields.where() + ".levels[" + std::to_string(l) + "]");
     CookedLevel level;
     level.tau = level_fields.number("tau");
-    const json& hulls = level_fields.array("hulls");
-    for (std::size_t h = 0; h < hulls.size(); ++h) {
-      const json& flat = hulls[h];
-      const std::string key = "hulls[" + std::to_string(h) + "]";
-      if (!flat.is_array() || flat.size() % 2 != 0) {
-        throw BadGltf(level_fields.where() + ": " + key + " is not a flat array of x, y pairs");
-      }
-      Ring hull;
-      for (std::size_t i = 0; i < flat.size(); i += 2) {
-        hull.push_back(
-            {level_fields.number_of(flat[i], key), level_fields.number_of(flat[i + 1], key)});
-      }
-      level.hulls.push_back(std::move(hull));
-    }
+    level.hulls = version == 1 ? json_hulls(level_fields)
+                               : buffer_hulls(levels[l], level_fields, data, scaling);
     asset.levels.push_back(std::move(level));
   }
 
@@ -210,6 +298,7 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
 struct GltfContents {
   bool binary = false;
   bool draco = false;
+  bool meshopt = false;
   std::size_t bytes = 0;
   std::vector<CookedAsset> assets;
 };
@@ -218,7 +307,8 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   GltfContents contents;
   const std::string bytes = read_file(path);
   contents.bytes = bytes.size();
-  json root = json::parse(json_text(bytes, contents.binary), nullptr, false);
+  std::string bin;
+  json root = json::parse(json_text(bytes, contents.binary, bin), nullptr, false);
   if (root.is_discarded()) {
     throw BadGltf(contents.binary ? "the GLB JSON chunk is not valid JSON"
                                   : "neither a GLB nor valid glTF JSON");
@@ -232,8 +322,10 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   if (root.contains("extensionsUsed") && root["extensionsUsed"].is_array()) {
     for (const json& name : root["extensionsUsed"]) {
       if (name == "KHR_draco_mesh_compression") contents.draco = true;
+      if (name == "EXT_meshopt_compression") contents.meshopt = true;
     }
   }
+  const GltfData data(root, std::move(bin));
   if (root.contains("nodes") && root["nodes"].is_array()) {
     const json& nodes = root["nodes"];
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -242,7 +334,7 @@ GltfContents read_gltf(const std::filesystem::path& path) {
       const json& extras = node["extras"];
       if (!extras.contains("hullcook") || !extras["hullcook"].is_object()) continue;
       if (!extras["hullcook"].contains("version")) continue;  // a hull node, not an asset node
-      contents.assets.push_back(read_asset(node, extras["hullcook"], i));
+      contents.assets.push_back(read_asset(node, extras["hullcook"], i, data));
     }
   }
   // hullcook writes a valid document for zero assets; any other glTF without our extras is not
@@ -266,9 +358,10 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
   }
   std::cout << path.string() << ": glTF 2.0 "
             << (contents.binary ? "binary (.glb)" : "text (.gltf)")
-            << (contents.draco ? " with Draco meshes" : "") << ", " << contents.bytes << " bytes, "
-            << contents.assets.size() << " assets, " << hulls << " hulls, " << vertices
-            << " hull vertices over all levels";
+            << (contents.draco ? " with Draco meshes" : "")
+            << (contents.meshopt ? " with meshopt compression" : "") << ", " << contents.bytes
+            << " bytes, " << contents.assets.size() << " assets, " << hulls << " hulls, "
+            << vertices << " hull vertices over all levels";
   if (vertices > 0) {
     std::cout << ", " << shortest(std::round(10.0 * contents.bytes / vertices) / 10.0)
               << " bytes per vertex";

@@ -1,19 +1,25 @@
 // The glTF 2.0 writer. The schema is documented in docs/gltf-extras.md.
 //
 // Why nlohmann::json and a hand-made GLB container rather than tinygltf's writer: the file must be
-// byte-for-byte deterministic, the hulls in the extras must print as round-tripping doubles, and
-// the Draco primitives need accessors without bufferViews plus the KHR_draco_mesh_compression
-// object built by hand anyway. With nlohmann we control every key (sorted, so deterministic), every
-// number and the container (a GLB is a 12-byte header and two padded chunks). tinygltf stays the
-// independent reader in the tests (tests/gltf), so a writer bug cannot hide behind a reader that
-// shares the writer's code.
+// byte-for-byte deterministic, the accessors must sit at offsets in one buffer view per kind of
+// data, and the Draco primitives need accessors without bufferViews plus the
+// KHR_draco_mesh_compression object built by hand anyway. With nlohmann we control every key
+// (sorted, so deterministic), every number and the container (a GLB is a 12-byte header and two
+// padded chunks). tinygltf stays the independent reader in the tests (tests/gltf), so a writer bug
+// cannot hide behind a reader that shares the writer's code.
+//
+// Why one flat mesh per asset rather than a prism mesh per hull (as the version 1 layout had):
+// the sample sprites' hulls have 5 vertices on average, and a hull of its own costs a node, a
+// mesh, an accessor with min/max and two physics objects, about 400 bytes of JSON, or 80 bytes per
+// vertex before any geometry; a prism doubles the vertices. The convex pieces stay in the extras,
+// which are the canonical data; the mesh is a mirror for 3D-minded importers.
 #include "hullcook/cook/gltf_writer.h"
+
+#include "gltf_draco.h"
+#include "gltf_meshopt.h"
 
 #include "hullcook/core/error.h"
 
-#include <draco/compression/decode.h>
-#include <draco/compression/encode.h>
-#include <draco/mesh/triangle_soup_mesh_builder.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -34,10 +40,11 @@ using json = nlohmann::json;
 // glTF enumerations (glTF 2.0 specification, §5).
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
-constexpr int kComponentFloat = 5126;
+constexpr int kComponentShort = 5122;
+constexpr int kComponentUnsignedByte = 5121;
 constexpr int kComponentUnsignedShort = 5123;
 constexpr int kComponentUnsignedInt = 5125;
-constexpr int kModeTriangles = 4;
+constexpr int kComponentFloat = 5126;
 
 constexpr std::uint32_t kGlbMagic = 0x46546C67;  // "glTF"
 constexpr std::uint32_t kGlbVersion = 2;
@@ -48,45 +55,9 @@ constexpr const char* kKhrPhysics = "KHR_physics_rigid_bodies";
 constexpr const char* kOmiBody = "OMI_physics_body";
 constexpr const char* kOmiShape = "OMI_physics_shape";
 constexpr const char* kKhrDraco = "KHR_draco_mesh_compression";
+constexpr const char* kExtMeshopt = "EXT_meshopt_compression";
+constexpr const char* kKhrQuantization = "KHR_mesh_quantization";
 
-// A convex ring extruded along z: the vertices of the ring at z = +h (0..n-1), then at z = -h
-// (n..2n-1); outward-facing counter-clockwise triangles.
-struct Prism {
-  std::vector<float> positions;  // [output units] x, y, z per vertex
-  std::vector<std::uint32_t> indices;
-};
-
-Prism extrude(const Ring& hull, double half_thickness, const std::string& asset_name) {
-  const std::uint32_t n = static_cast<std::uint32_t>(hull.size());
-  Prism prism;
-  prism.positions.reserve(6 * n);
-  for (double z : {half_thickness, -half_thickness}) {
-    for (const Vec2& vertex : hull) {
-      for (double coordinate : {vertex.x, vertex.y, z}) {
-        float value = static_cast<float>(coordinate);
-        if (!std::isfinite(value)) {
-          throw OutputError("asset " + asset_name + ": hull coordinate " +
-                            std::to_string(coordinate) + " does not fit a 32-bit float");
-        }
-        prism.positions.push_back(value);
-      }
-    }
-  }
-  prism.indices.reserve(3 * (4 * n - 4));
-  for (std::uint32_t i = 1; i + 1 < n; ++i) {
-    prism.indices.insert(prism.indices.end(), {0, i, i + 1});          // top, facing +z
-    prism.indices.insert(prism.indices.end(), {n, n + i + 1, n + i});  // bottom, facing -z
-  }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    // The ring is counter-clockwise, so the outside of edge i -> j is on its right.
-    std::uint32_t j = (i + 1) % n;
-    prism.indices.insert(prism.indices.end(), {n + i, n + j, j});
-    prism.indices.insert(prism.indices.end(), {n + i, j, i});
-  }
-  return prism;
-}
-
-// Twice the signed area of the ring once its vertices are rounded to floats, as in the mesh.
 double float_area(const Ring& ring) {
   double twice = 0.0;
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -152,42 +123,6 @@ json physics_json(const PhysicsProperties& physics) {
       {"category_bits", physics.category_bits},         {"mask_bits", physics.mask_bits}};
 }
 
-// The canonical 2D data, the node's extras (docs/gltf-extras.md, version 1).
-json asset_extras(const CookedAsset& asset, double half_thickness) {
-  json levels = json::array();
-  for (const CookedLevel& level : asset.levels) {
-    json hulls = json::array();
-    for (const Ring& hull : level.hulls) {
-      json flat = json::array();
-      for (const Vec2& vertex : hull) {
-        flat.push_back(vertex.x);
-        flat.push_back(vertex.y);
-      }
-      hulls.push_back(std::move(flat));
-    }
-    levels.push_back({{"tau", level.tau}, {"hulls", std::move(hulls)}});
-  }
-  json extras = {
-      {"version", 1},
-      {"units", "output units (1 unit = 1 m in glTF)"},
-      // The name, not the path given: the bytes must not depend on where the cook ran (issue 19).
-      {"source", asset.name},
-      {"image_size", json::array({asset.image_width, asset.image_height})},
-      {"pixels_per_unit", asset.pixels_per_unit},
-      {"pivot", vec2_json(asset.pivot)},
-      {"transform",
-       {{"scale", asset.transform.scale},
-        {"origin", vec2_json(asset.transform.origin)},
-        {"flip_y", asset.transform.flip_y}}},
-      {"tau", asset.tau},
-      {"measure", asset.measure},
-      {"levels", std::move(levels)},
-      {"mesh_half_thickness", half_thickness},
-  };
-  if (asset.physics) extras["physics"] = physics_json(*asset.physics);
-  return {{"hullcook", std::move(extras)}};
-}
-
 // The collision systems of the KHR collision filter: one name per bit of Box2D's 16-bit filter.
 json bit_names(std::uint16_t bits) {
   json names = json::array();
@@ -211,22 +146,6 @@ std::optional<json> collision_filter(const PhysicsProperties& physics) {
   return filter;
 }
 
-// The asset's size, for the thickness of its prisms: the larger side of the bounding box of the
-// finest level's hulls; 1 when that box is empty or a point.
-double asset_size(const CookedAsset& asset) {
-  if (asset.levels.empty()) return 1.0;
-  double min_x = std::numeric_limits<double>::infinity(), min_y = min_x;
-  double max_x = -min_x, max_y = -min_x;
-  for (const Ring& hull : asset.levels.front().hulls) {
-    for (const Vec2& v : hull) {
-      min_x = std::min(min_x, v.x), max_x = std::max(max_x, v.x);
-      min_y = std::min(min_y, v.y), max_y = std::max(max_y, v.y);
-    }
-  }
-  double size = std::max(max_x - min_x, max_y - min_y);
-  return std::isfinite(size) && size > 0.0 ? size : 1.0;
-}
-
 std::string base64(std::string_view bytes) {
   static constexpr char kAlphabet[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -248,31 +167,145 @@ void append_u32(std::string& out, std::uint32_t value) {
   for (int shift = 0; shift < 32; shift += 8) out += static_cast<char>((value >> shift) & 0xFF);
 }
 
+// The kinds of data in the buffer, each in one bufferView (in this order, when not empty).
+enum ViewKind : std::size_t { kPositions, kIndices, kPlanar, kCounts, kViewKinds };
+
+// A level's hulls in the buffer's form: vertices per hull, and x, y per vertex, hull after hull.
+struct PlanarLevel {
+  std::vector<std::uint32_t> counts;
+  std::vector<float> xy;
+};
+
+PlanarLevel planar_level(const CookedLevel& level) {
+  PlanarLevel planar;
+  for (const Ring& hull : level.hulls) {
+    planar.counts.push_back(static_cast<std::uint32_t>(hull.size()));
+    for (const Vec2& v : hull) {
+      planar.xy.push_back(static_cast<float>(v.x));
+      planar.xy.push_back(static_cast<float>(v.y));
+    }
+  }
+  return planar;
+}
+
+// The finest level as one flat mesh: every hull's vertices at z = 0, hull after hull (all of them,
+// so that the level's 2D data can be the mesh's positions), and a counter-clockwise triangle fan
+// per hull with an area as floats (a clockwise hull, against the contract, is fanned reversed so
+// that it still faces +z).
+TriangleMesh flat_mesh(const std::vector<Ring>& hulls, const std::string& asset_name) {
+  TriangleMesh mesh;
+  for (std::size_t h = 0; h < hulls.size(); ++h) {
+    const Ring& hull = hulls[h];
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size() / 3);
+    for (const Vec2& v : hull) {
+      mesh.positions.insert(mesh.positions.end(),
+                            {static_cast<float>(v.x), static_cast<float>(v.y), 0.0f});
+    }
+    const double area = float_area(hull);
+    if (!std::isfinite(area)) {
+      throw OutputError("asset " + asset_name + ": hull " + std::to_string(h) +
+                        " has a coordinate that does not fit a 32-bit float");
+    }
+    if (hull.size() < 3 || area == 0.0) continue;
+    const auto n = static_cast<std::uint32_t>(hull.size());
+    for (std::uint32_t i = 1; i + 1 < n; ++i) {
+      if (area > 0.0) {
+        mesh.indices.insert(mesh.indices.end(), {base, base + i, base + i + 1});
+      } else {
+        mesh.indices.insert(mesh.indices.end(), {base, base + i + 1, base + i});
+      }
+    }
+  }
+  return mesh;
+}
+
+std::pair<std::array<float, 3>, std::array<float, 3>> bounds(const std::vector<float>& xyz) {
+  std::array<float, 3> min{xyz[0], xyz[1], xyz[2]}, max = min;
+  for (std::size_t i = 0; i < xyz.size(); ++i) {
+    min[i % 3] = std::min(min[i % 3], xyz[i]);
+    max[i % 3] = std::max(max[i % 3], xyz[i]);
+  }
+  return {min, max};
+}
+
+// A POSITION accessor without its data; min/max as the exact doubles of the floats (the validator
+// compares them bit for bit).
+json position_accessor(std::size_t count, const std::array<float, 3>& min,
+                       const std::array<float, 3>& max) {
+  return {{"componentType", kComponentFloat},
+          {"count", count},
+          {"type", "VEC3"},
+          {"min", {double{min[0]}, double{min[1]}, double{min[2]}}},
+          {"max", {double{max[0]}, double{max[1]}, double{max[2]}}}};
+}
+
+// The narrowest unsigned component type holding every value up to `largest`.
+int unsigned_component(std::uint32_t largest, bool allow_byte) {
+  if (allow_byte && largest <= 0xFF) return kComponentUnsignedByte;
+  // 65535 is the primitive restart value, never a valid index.
+  return largest < 0xFFFF ? kComponentUnsignedShort : kComponentUnsignedInt;
+}
+
+// The values as `component`-sized little-endian integers.
+std::string pack_unsigned(const std::vector<std::uint32_t>& values, int component) {
+  const std::size_t size = component == kComponentUnsignedByte    ? 1
+                           : component == kComponentUnsignedShort ? 2
+                                                                  : 4;
+  std::string bytes(values.size() * size, '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t b = 0; b < size; ++b) {
+      bytes[i * size + b] = static_cast<char>((values[i] >> (8 * b)) & 0xFF);
+    }
+  }
+  return bytes;
+}
+
 // Builds the document's arrays and its single buffer.
 class Document {
  public:
-  explicit Document(bool draco) : draco_(draco) {}
+  explicit Document(const GltfOptions& options) : options_(options) {}
 
-  // Appends bytes to the buffer at a 4-byte aligned offset; returns the bufferView's index.
-  int add_buffer_view(const void* data, std::size_t size, std::optional<int> target) {
-    buffer_.resize((buffer_.size() + 3) & ~std::size_t{3}, '\0');
-    json view = {{"buffer", 0}, {"byteOffset", buffer_.size()}, {"byteLength", size}};
-    if (target) view["target"] = *target;
-    buffer_.append(static_cast<const char*>(data), size);
-    buffer_views_.push_back(std::move(view));
-    return static_cast<int>(buffer_views_.size() - 1);
-  }
+  const GltfOptions& options() const { return options_; }
 
-  int add_accessor(json accessor) {
+  // The index component type of the whole document with --meshopt (the compressed index view
+  // decodes to one width), set before any asset is added.
+  void set_index_component(int component) { index_component_ = component; }
+  std::optional<int> index_component() const { return index_component_; }
+
+  // Appends the accessor's data to its kind's bufferView, at an offset aligned to its component
+  // size (4 for vertex attributes); returns the accessor's index. The bufferView's index is set
+  // when the buffer is laid out (finish()).
+  int add_accessor(ViewKind kind, std::string_view data, json accessor) {
+    std::string& view = views_[kind];
+    const int component = accessor["componentType"];
+    std::size_t align = component == kComponentUnsignedByte                                    ? 1
+                        : component == kComponentShort || component == kComponentUnsignedShort ? 2
+                                                                                               : 4;
+    if (kind == kPositions) align = 4;
+    view.resize((view.size() + align - 1) / align * align, '\0');
+    if (!view.empty()) accessor["byteOffset"] = view.size();
+    view.append(data);
+    accessor_views_.push_back(kind);
     accessors_.push_back(std::move(accessor));
     return static_cast<int>(accessors_.size() - 1);
   }
 
-  // Adds a mesh with one triangle primitive; returns its index.
-  int add_mesh(const Prism& prism, const std::string& name) {
-    json primitive = draco_ ? draco_primitive(prism, name) : plain_primitive(prism);
-    primitive["mode"] = kModeTriangles;
-    meshes_.push_back({{"name", name}, {"primitives", json::array({std::move(primitive)})}});
+  // An accessor whose data an extension provides (Draco): no bufferView.
+  int add_accessor(json accessor) {
+    accessor_views_.push_back(kViewKinds);
+    accessors_.push_back(std::move(accessor));
+    return static_cast<int>(accessors_.size() - 1);
+  }
+
+  // A bufferView of its own (a Draco primitive); they come first in the buffer.
+  int add_blob_view(std::string bytes) {
+    blobs_.push_back(std::move(bytes));
+    return static_cast<int>(blobs_.size() - 1);
+  }
+
+  int add_mesh(json primitive) {
+    primitive["material"] = 0;
+    meshes_.push_back({{"primitives", json::array({std::move(primitive)})}});
     return static_cast<int>(meshes_.size() - 1);
   }
 
@@ -295,29 +328,101 @@ class Document {
     return static_cast<int>(collision_filters_.size() - 1);
   }
 
-  // The glTF JSON; the buffer as a data: URI unless it goes into a GLB's BIN chunk.
-  json to_json(const std::vector<int>& scene_nodes, bool embed_buffer) const {
+  // Lays out the buffer (the blobs, then one bufferView per non-empty kind) and returns the glTF
+  // JSON; the buffer goes into a data: URI unless it goes into a GLB's BIN chunk.
+  json finish(const std::vector<int>& scene_nodes, bool embed_buffer) {
+    json buffer_views = json::array();
+    auto add_view = [&](std::string_view bytes) {
+      buffer_.resize((buffer_.size() + 3) & ~std::size_t{3}, '\0');
+      json view = {{"buffer", 0}, {"byteLength", bytes.size()}};
+      if (!buffer_.empty()) view["byteOffset"] = buffer_.size();
+      buffer_.append(bytes);
+      buffer_views.push_back(std::move(view));
+      return static_cast<int>(buffer_views.size() - 1);
+    };
+    for (const std::string& blob : blobs_) add_view(blob);
+    std::array<int, kViewKinds> view_index{};
+    std::size_t fallback_length = 0;  // the uncompressed size of the compressed views
+    for (std::size_t kind = 0; kind < kViewKinds; ++kind) {
+      if (views_[kind].empty()) continue;
+      const std::size_t stride = kind == kPositions ? (options_.meshopt ? 8 : 12)
+                                 : kind == kIndices
+                                     ? (index_component_ == kComponentUnsignedInt ? 4 : 2)
+                                 : kind == kPlanar ? 4
+                                                   : 1;
+      if (options_.meshopt && kind != kCounts) {
+        // Compressed into buffer 0; the view itself lies in the fallback buffer 1, which has no
+        // data: a reader must decode (the extension is required).
+        const MeshoptMode mode =
+            kind == kIndices ? MeshoptMode::triangles : MeshoptMode::attributes;
+        const std::string compressed = meshopt_compress(views_[kind], stride, mode);
+        view_index[kind] = add_view(compressed);
+        json& view = buffer_views.back();
+        json extension = {{"buffer", 0},
+                          {"byteLength", compressed.size()},
+                          {"byteStride", stride},
+                          {"count", views_[kind].size() / stride},
+                          {"mode", mode == MeshoptMode::triangles ? "TRIANGLES" : "ATTRIBUTES"}};
+        if (view.contains("byteOffset")) extension["byteOffset"] = view["byteOffset"];
+        fallback_length = (fallback_length + 3) & ~std::size_t{3};
+        view = {{"buffer", 1},
+                {"byteLength", views_[kind].size()},
+                {"extensions", {{kExtMeshopt, std::move(extension)}}}};
+        if (fallback_length > 0) view["byteOffset"] = fallback_length;
+        fallback_length += views_[kind].size();
+      } else {
+        view_index[kind] = add_view(views_[kind]);
+      }
+      json& view = buffer_views.back();
+      if (kind == kPositions) {
+        view["target"] = kArrayBuffer;
+        view["byteStride"] = stride;  // several POSITION accessors share the view
+      }
+      if (kind == kIndices) view["target"] = kElementArrayBuffer;
+    }
+    for (std::size_t a = 0; a < accessors_.size(); ++a) {
+      if (accessor_views_[a] != kViewKinds)
+        accessors_[a]["bufferView"] = view_index[accessor_views_[a]];
+    }
+
     json root = {{"asset", {{"version", "2.0"}, {"generator", "hullcook"}}}, {"scene", 0}};
     json scene = json::object();
     if (!scene_nodes.empty()) scene["nodes"] = scene_nodes;
     root["scenes"] = json::array({std::move(scene)});
     if (!nodes_.empty()) root["nodes"] = nodes_;
-    if (!meshes_.empty()) root["meshes"] = meshes_;
+    if (!meshes_.empty()) {
+      root["meshes"] = meshes_;
+      // Flat meshes: seen from either side.
+      root["materials"] = json::array({{{"doubleSided", true}}});
+    }
     if (!accessors_.empty()) root["accessors"] = accessors_;
-    if (!buffer_views_.empty()) root["bufferViews"] = buffer_views_;
+    if (!buffer_views.empty()) root["bufferViews"] = std::move(buffer_views);
     if (!buffer_.empty()) {
       json buffer = {{"byteLength", buffer_.size()}};
       if (embed_buffer) buffer["uri"] = "data:application/octet-stream;base64," + base64(buffer_);
       root["buffers"] = json::array({std::move(buffer)});
+      if (fallback_length > 0) {
+        root["buffers"].push_back({{"byteLength", fallback_length},
+                                   {"extensions", {{kExtMeshopt, {{"fallback", true}}}}}});
+      }
     }
     json used = json::array();
     json required = json::array();
     json extensions = json::object();
-    if (draco_ && !meshes_.empty()) {
+    if (options_.draco && !meshes_.empty()) {
       // No uncompressed fallback (it would more than undo the compression), so by the
       // extension's specification it is required.
       used.push_back(kKhrDraco);
       required.push_back(kKhrDraco);
+    }
+    if (fallback_length > 0) {
+      used.push_back(kExtMeshopt);
+      required.push_back(kExtMeshopt);
+    }
+    if (options_.meshopt && !meshes_.empty()) {
+      // SHORT positions: a reader without the extension would misread them.
+      used.push_back(kKhrQuantization);
+      required.push_back(kKhrQuantization);
     }
     if (!omi_shapes_.empty()) {
       used.push_back(kKhrPhysics);
@@ -338,114 +443,12 @@ class Document {
   const std::string& buffer() const { return buffer_; }
 
  private:
-  static json position_accessor(std::size_t count, const std::array<float, 3>& min,
-                                const std::array<float, 3>& max) {
-    // min/max as the exact doubles of the stored floats: the validator compares them bit for bit.
-    return {{"componentType", kComponentFloat},
-            {"count", count},
-            {"type", "VEC3"},
-            {"min", {double{min[0]}, double{min[1]}, double{min[2]}}},
-            {"max", {double{max[0]}, double{max[1]}, double{max[2]}}}};
-  }
-
-  static std::pair<std::array<float, 3>, std::array<float, 3>> bounds(
-      const std::vector<float>& positions) {
-    std::array<float, 3> min{}, max{};
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-      min[axis] = max[axis] = positions[axis];
-    }
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      min[i % 3] = std::min(min[i % 3], positions[i]);
-      max[i % 3] = std::max(max[i % 3], positions[i]);
-    }
-    return {min, max};
-  }
-
-  json plain_primitive(const Prism& prism) {
-    auto [min, max] = bounds(prism.positions);
-    json positions = position_accessor(prism.positions.size() / 3, min, max);
-    positions["bufferView"] = add_buffer_view(prism.positions.data(),
-                                              prism.positions.size() * sizeof(float), kArrayBuffer);
-    int position_accessor_index = add_accessor(std::move(positions));
-
-    std::size_t vertex_count = prism.positions.size() / 3;
-    json indices = {{"count", prism.indices.size()}, {"type", "SCALAR"}};
-    if (vertex_count <= 0xFFFF) {
-      std::vector<std::uint16_t> narrow(prism.indices.begin(), prism.indices.end());
-      indices["componentType"] = kComponentUnsignedShort;
-      indices["bufferView"] = add_buffer_view(narrow.data(), narrow.size() * sizeof(std::uint16_t),
-                                              kElementArrayBuffer);
-    } else {
-      indices["componentType"] = kComponentUnsignedInt;
-      indices["bufferView"] = add_buffer_view(
-          prism.indices.data(), prism.indices.size() * sizeof(std::uint32_t), kElementArrayBuffer);
-    }
-    return {{"attributes", {{"POSITION", position_accessor_index}}},
-            {"indices", add_accessor(std::move(indices))}};
-  }
-
-  // KHR_draco_mesh_compression without fallback: the accessors have no bufferView and describe
-  // the decoded data. To get their count/min/max right whatever Draco does (it deduplicates and
-  // reorders points, and quantizes), the encoded bytes are decoded here and measured.
-  json draco_primitive(const Prism& prism, const std::string& name) {
-    const int face_count = static_cast<int>(prism.indices.size() / 3);
-    draco::TriangleSoupMeshBuilder builder;
-    builder.Start(face_count);
-    const int position_attribute =
-        builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-    for (int face = 0; face < face_count; ++face) {
-      const std::uint32_t* corner = &prism.indices[3 * static_cast<std::size_t>(face)];
-      builder.SetAttributeValuesForFace(
-          position_attribute, draco::FaceIndex(face), &prism.positions[3 * corner[0]],
-          &prism.positions[3 * corner[1]], &prism.positions[3 * corner[2]]);
-    }
-    std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
-    if (!mesh) throw OutputError("mesh " + name + ": Draco could not build the mesh");
-
-    draco::Encoder encoder;
-    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, kGltfDracoPositionBits);
-    draco::EncoderBuffer encoded;
-    draco::Status status = encoder.EncodeMeshToBuffer(*mesh, &encoded);
-    if (!status.ok()) {
-      throw OutputError("mesh " + name + ": Draco encoding failed: " + status.error_msg_string());
-    }
-
-    draco::DecoderBuffer input;
-    input.Init(encoded.data(), encoded.size());
-    draco::Decoder decoder;
-    auto decoded = decoder.DecodeMeshFromBuffer(&input);
-    if (!decoded.ok() || !decoded.value()) {
-      throw OutputError("mesh " + name + ": the Draco encoding does not decode");
-    }
-    const draco::Mesh& result = *decoded.value();
-    const draco::PointAttribute* decoded_positions =
-        result.GetNamedAttribute(draco::GeometryAttribute::POSITION);
-    if (!decoded_positions || result.num_points() == 0) {
-      throw OutputError("mesh " + name + ": the Draco encoding lost its positions");
-    }
-    std::vector<float> points(3 * static_cast<std::size_t>(result.num_points()));
-    for (draco::PointIndex point(0); point < result.num_points(); ++point) {
-      decoded_positions->GetMappedValue(point, &points[3 * point.value()]);
-    }
-    auto [min, max] = bounds(points);
-    int position_accessor_index = add_accessor(position_accessor(result.num_points(), min, max));
-    int index_accessor =
-        add_accessor({{"componentType", result.num_points() <= 0xFFFF ? kComponentUnsignedShort
-                                                                      : kComponentUnsignedInt},
-                      {"count", 3 * static_cast<std::size_t>(result.num_faces())},
-                      {"type", "SCALAR"}});
-
-    int view = add_buffer_view(encoded.data(), encoded.size(), std::nullopt);
-    json extension = {{"bufferView", view},
-                      {"attributes", {{"POSITION", decoded_positions->unique_id()}}}};
-    return {{"attributes", {{"POSITION", position_accessor_index}}},
-            {"indices", index_accessor},
-            {"extensions", {{kKhrDraco, std::move(extension)}}}};
-  }
-
-  bool draco_;
+  GltfOptions options_;
+  std::optional<int> index_component_;
+  std::array<std::string, kViewKinds> views_;
+  std::vector<std::string> blobs_;
   std::string buffer_;
-  json buffer_views_ = json::array();
+  std::vector<ViewKind> accessor_views_;  // kViewKinds: no bufferView
   json accessors_ = json::array();
   json meshes_ = json::array();
   json nodes_ = json::array();
@@ -454,13 +457,129 @@ class Document {
   json collision_filters_ = json::array();
 };
 
-// Adds the asset's root node and one child per hull of its finest level; returns the root's index.
-int add_asset(Document& document, const CookedAsset& asset) {
-  check_finite(asset);
-  const double half_thickness = kGltfHalfThickness * asset_size(asset);
-  const int asset_node =
-      document.add_node({{"name", asset.name}, {"extras", asset_extras(asset, half_thickness)}});
+// The mesh's primitive, uncompressed: a POSITION accessor (returned in `positions`) and indices.
+// The hulls' vertices on the grid, x and y per vertex; as POSITION data (`as_positions`) also
+// z = 0 and a pad, so that each vertex takes 8 bytes (vertex attributes are 4-byte aligned).
+std::vector<std::int16_t> quantized_vertices(const std::vector<Ring>& hulls,
+                                             const Quantization& grid, bool as_positions) {
+  std::vector<std::int16_t> values;
+  for (const Ring& hull : hulls) {
+    for (const Vec2& v : hull) {
+      values.push_back(grid.x(v.x));
+      values.push_back(grid.y(v.y));
+      if (as_positions) values.insert(values.end(), {0, 0});
+    }
+  }
+  return values;
+}
 
+template <typename T>
+std::string_view bytes_of(const std::vector<T>& values) {
+  return {reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)};
+}
+
+// The mesh's primitive, uncompressed or (with a grid) quantized for EXT_meshopt_compression: a
+// POSITION accessor (returned in `positions`) and indices.
+json plain_primitive(Document& document, const TriangleMesh& mesh, const std::vector<Ring>& hulls,
+                     const std::optional<Quantization>& grid, int& positions) {
+  const std::size_t vertex_count = mesh.positions.size() / 3;
+  if (grid) {
+    const std::vector<std::int16_t> values = quantized_vertices(hulls, *grid, true);
+    std::array<int, 3> min{}, max{};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      min[axis] = max[axis] = values[axis];
+      for (std::size_t i = axis; i < values.size(); i += 4) {
+        min[axis] = std::min<int>(min[axis], values[i]);
+        max[axis] = std::max<int>(max[axis], values[i]);
+      }
+    }
+    positions = document.add_accessor(kPositions, bytes_of(values),
+                                      {{"componentType", kComponentShort},
+                                       {"count", vertex_count},
+                                       {"type", "VEC3"},
+                                       {"min", min},
+                                       {"max", max}});
+  } else {
+    auto [min, max] = bounds(mesh.positions);
+    positions = document.add_accessor(kPositions, bytes_of(mesh.positions),
+                                      position_accessor(vertex_count, min, max));
+  }
+  const int component = document.index_component().value_or(
+      unsigned_component(static_cast<std::uint32_t>(vertex_count - 1), false));
+  const int indices = document.add_accessor(
+      kIndices, pack_unsigned(mesh.indices, component),
+      {{"componentType", component}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
+  return {{"attributes", {{"POSITION", positions}}}, {"indices", indices}};
+}
+
+// KHR_draco_mesh_compression without fallback: the accessors have no bufferView and describe the
+// decoded data, which draco_encode() measures.
+json draco_primitive(Document& document, const TriangleMesh& mesh, const std::string& name) {
+  DracoMesh encoded = draco_encode(mesh, kGltfDracoPositionBits, name);
+  const int positions =
+      document.add_accessor(position_accessor(encoded.decoded_points, encoded.min, encoded.max));
+  const int component =
+      unsigned_component(static_cast<std::uint32_t>(encoded.decoded_points - 1), false);
+  const int indices = document.add_accessor(
+      {{"componentType", component}, {"count", 3 * encoded.decoded_faces}, {"type", "SCALAR"}});
+  json extension = {{"bufferView", document.add_blob_view(std::move(encoded.bytes))},
+                    {"attributes", {{"POSITION", encoded.position_id}}}};
+  return {{"attributes", {{"POSITION", positions}}},
+          {"indices", indices},
+          {"extensions", {{kKhrDraco, std::move(extension)}}}};
+}
+
+// A level's entry in the extras: its tau, and accessors for its hulls' vertex counts and their
+// vertices (x, y: the first two components), or none for what it does not have.
+json level_json(Document& document, const CookedLevel& level, std::optional<int> vertices,
+                const std::optional<Quantization>& grid) {
+  json entry = {{"tau", level.tau}};
+  if (level.hulls.empty()) return entry;
+  PlanarLevel planar = planar_level(level);
+  const std::uint32_t largest = *std::max_element(planar.counts.begin(), planar.counts.end());
+  const int component = unsigned_component(largest, true);
+  entry["counts"] = document.add_accessor(
+      kCounts, pack_unsigned(planar.counts, component),
+      {{"componentType", component}, {"count", planar.counts.size()}, {"type", "SCALAR"}});
+  if (vertices) {
+    entry["vertices"] = *vertices;
+  } else if (!planar.xy.empty() && grid) {
+    entry["vertices"] = document.add_accessor(
+        kPlanar, bytes_of(quantized_vertices(level.hulls, *grid, false)),
+        {{"componentType", kComponentShort}, {"count", planar.xy.size() / 2}, {"type", "VEC2"}});
+  } else if (!planar.xy.empty()) {
+    entry["vertices"] = document.add_accessor(
+        kPlanar,
+        {reinterpret_cast<const char*>(planar.xy.data()), planar.xy.size() * sizeof(float)},
+        {{"componentType", kComponentFloat}, {"count", planar.xy.size() / 2}, {"type", "VEC2"}});
+  }
+  return entry;
+}
+
+// The asset's metadata for its extras (docs/gltf-extras.md, version 2), levels excluded.
+json asset_extras(const CookedAsset& asset) {
+  json extras = {
+      {"version", kGltfExtrasVersion},
+      {"units", "output units (1 unit = 1 m in glTF)"},
+      // The name, not the path given: the bytes must not depend on where the cook ran (issue 19).
+      {"source", asset.name},
+      {"image_size", json::array({asset.image_width, asset.image_height})},
+      {"pixels_per_unit", asset.pixels_per_unit},
+      {"pivot", vec2_json(asset.pivot)},
+      {"transform",
+       {{"scale", asset.transform.scale},
+        {"origin", vec2_json(asset.transform.origin)},
+        {"flip_y", asset.transform.flip_y}}},
+      {"tau", asset.tau},
+      {"measure", asset.measure},
+  };
+  if (asset.physics) extras["physics"] = physics_json(*asset.physics);
+  return extras;
+}
+
+// The physics drafts on the asset node, whose mesh is the collider's geometry (a triangle mesh:
+// the convex pieces themselves are in the extras).
+void add_colliders(Document& document, const CookedAsset& asset, int node_index, int mesh) {
   std::optional<int> material, filter;
   const bool sensor = asset.physics && asset.physics->sensor;
   if (asset.physics) {
@@ -474,44 +593,53 @@ int add_asset(Document& document, const CookedAsset& asset) {
       filter = document.add_collision_filter(std::move(*description));
     }
   }
+  const int shape = document.add_shape({{"type", "trimesh"}, {"trimesh", {{"mesh", mesh}}}});
+  // The draft's collider geometry names a node whose mesh is the geometry: this very node.
+  json khr_collider = {{"geometry", {{"node", node_index}, {"convexHull", false}}}};
+  if (material) khr_collider["physicsMaterial"] = *material;
+  if (filter) khr_collider["collisionFilter"] = *filter;
+  const char* role = sensor ? "trigger" : "collider";
+  document.node(node_index)["extensions"] = {{kKhrPhysics, {{role, std::move(khr_collider)}}},
+                                             {kOmiBody, {{role, {{"shape", shape}}}}}};
+}
 
-  json children = json::array();
-  const std::vector<Ring> no_hulls;
-  const std::vector<Ring>& hulls = asset.levels.empty() ? no_hulls : asset.levels.front().hulls;
-  for (std::size_t i = 0; i < hulls.size(); ++i) {
-    // A hull without area as floats has no prism to mirror it with; the extras keep it. A
-    // clockwise one (against the contract) is mirrored reversed, so its prism still faces out.
-    const double area = float_area(hulls[i]);
-    if (!std::isfinite(area)) {
-      throw OutputError("asset " + asset.name + ": hull " + std::to_string(i) +
-                        " has a coordinate that does not fit a 32-bit float");
-    }
-    if (hulls[i].size() < 3 || area == 0.0) continue;
-    Ring ring = hulls[i];
-    if (area < 0.0) std::reverse(ring.begin(), ring.end());
-    const std::string name = asset.name + "/hull" + std::to_string(i);
-    const int mesh = document.add_mesh(extrude(ring, half_thickness, asset.name), name);
-    const int shape = document.add_shape({{"type", "convex"}, {"convex", {{"mesh", mesh}}}});
-    const int node_index = static_cast<int>(asset_node + 1 + children.size());
-
-    // The draft's collider geometry names a node whose mesh is the geometry: this very node.
-    json khr_collider = {{"geometry", {{"node", node_index}, {"convexHull", true}}}};
-    if (material) khr_collider["physicsMaterial"] = *material;
-    if (filter) khr_collider["collisionFilter"] = *filter;
-    const char* role = sensor ? "trigger" : "collider";
-    json node = {{"name", name},
-                 {"mesh", mesh},
-                 {"extras", {{"hullcook", {{"hull", i}}}}},
-                 {"extensions",
-                  {{kKhrPhysics, {{role, std::move(khr_collider)}}},
-                   {kOmiBody, {{role, {{"shape", shape}}}}}}}};
-    if (document.add_node(std::move(node)) != node_index) {
-      throw OutputError("asset " + asset.name + ": internal error: glTF node numbering");
-    }
-    children.push_back(node_index);
+// Adds the asset's node (its extras, and its finest level's mesh when it has triangles); returns
+// the node's index.
+int add_asset(Document& document, const CookedAsset& asset) {
+  check_finite(asset);
+  const int node_index = document.add_node({{"name", asset.name}});
+  json extras = asset_extras(asset);
+  std::optional<Quantization> grid;
+  if (document.options().meshopt) {
+    // KHR_mesh_quantization: the node's transform maps the grid to output units, for the mesh
+    // and the extras' vertices alike.
+    grid = Quantization::of(asset);
+    document.node(node_index)["translation"] = {grid->origin.x, grid->origin.y, 0.0};
+    document.node(node_index)["scale"] = {grid->step, grid->step, grid->step};
   }
-  if (!children.empty()) document.node(asset_node)["children"] = std::move(children);
-  return asset_node;
+  json levels = json::array();
+  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+    std::optional<int> vertices;
+    if (l == 0) {
+      const TriangleMesh mesh = flat_mesh(asset.levels[0].hulls, asset.name);
+      if (!mesh.indices.empty()) {
+        int positions = -1;
+        json primitive =
+            document.options().draco
+                ? draco_primitive(document, mesh, asset.name)
+                : plain_primitive(document, mesh, asset.levels[0].hulls, grid, positions);
+        // Without Draco, the mesh's positions are the finest level's vertices (z = 0).
+        if (positions >= 0) vertices = positions;
+        const int mesh_index = document.add_mesh(std::move(primitive));
+        document.node(node_index)["mesh"] = mesh_index;
+        add_colliders(document, asset, node_index, mesh_index);
+      }
+    }
+    levels.push_back(level_json(document, asset.levels[l], vertices, grid));
+  }
+  extras["levels"] = std::move(levels);
+  document.node(node_index)["extras"] = {{"hullcook", std::move(extras)}};
+  return node_index;
 }
 
 std::string glb_container(const std::string& json_text, const std::string& bin) {
@@ -542,13 +670,28 @@ std::string glb_container(const std::string& json_text, const std::string& bin) 
 }  // namespace
 
 std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options) {
-  Document document(options.draco);
+  if (options.draco && options.meshopt) {
+    throw UsageError("--draco and --meshopt compress the same meshes: give one of them");
+  }
+  Document document(options);
+  if (options.meshopt) {
+    std::size_t largest = 0;
+    for (const CookedAsset& asset : assets) {
+      std::size_t vertices = 0;
+      if (!asset.levels.empty()) {
+        for (const Ring& hull : asset.levels.front().hulls) vertices += hull.size();
+      }
+      largest = std::max(largest, vertices);
+    }
+    document.set_index_component(largest < 0xFFFF ? kComponentUnsignedShort
+                                                  : kComponentUnsignedInt);
+  }
   std::vector<int> scene_nodes;
   scene_nodes.reserve(assets.size());
   for (const CookedAsset& asset : assets) scene_nodes.push_back(add_asset(document, asset));
 
   // Invalid UTF-8 in a name is replaced (U+FFFD) rather than refused: the name is a label.
-  std::string text = document.to_json(scene_nodes, !options.binary)
+  std::string text = document.finish(scene_nodes, !options.binary)
                          .dump(-1, ' ', false, json::error_handler_t::replace);
   if (!options.binary) return text;
   return glb_container(text, document.buffer());

@@ -34,7 +34,8 @@ std::string output_bytes(const CookResult& result, const std::filesystem::path& 
       return write_bundle(result.assets);
     case OutputFormat::gltf:
     case OutputFormat::glb:
-      return write_gltf(result.assets, GltfOptions{format == OutputFormat::glb, settings.draco});
+      return write_gltf(result.assets,
+                        GltfOptions{format == OutputFormat::glb, settings.draco, settings.meshopt});
     case OutputFormat::fragment:
       return write_fragment(result.assets, settings);
   }

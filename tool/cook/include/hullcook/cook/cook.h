@@ -69,6 +69,7 @@ struct Settings {
   // Output.
   std::optional<PhysicsProperties> physics;
   bool draco = false;
+  bool meshopt = false;  // glTF: EXT_meshopt_compression + KHR_mesh_quantization
   unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
   // Keep each asset's regions and pieces (with their components) in the result: the debug JSON
   // needs them, the bundle and glTF writers only the levels' hulls. Without them a cook's memory

@@ -16,22 +16,26 @@ struct GltfOptions {
   // fallback, so the extension is listed in extensionsRequired). The 2D hulls in each node's
   // extras are never compressed and stay authoritative.
   bool draco = false;
+  // true: the buffer's views are compressed with EXT_meshopt_compression (as gltfpack does) and
+  // every coordinate is rounded to a 16-bit grid per asset (KHR_mesh_quantization; the asset
+  // node's translation and scale map the grid to output units), both extensions required.
+  // Exclusive with draco.
+  bool meshopt = false;
 };
 
-// Half the thickness of the extruded hull meshes, as a fraction of the asset's size (the larger
-// side of the bounding box of its finest level's hulls): the prisms span z in [-h, +h] with
-// h = kGltfHalfThickness * size, so they are 1% of the asset's size thick.
-inline constexpr double kGltfHalfThickness = 0.005;
+// The version of the extras schema written (docs/gltf-extras.md). Version 1 held the hulls as
+// JSON numbers and a prism mesh per hull; version 2 holds them in the buffer, one mesh per asset.
+inline constexpr int kGltfExtrasVersion = 2;
 
 // Quantization of the Draco-compressed positions [bits per coordinate]: the worst error of a
 // decoded vertex is (largest side of the mesh's bounding box) / (2^bits - 1) / 2 per coordinate.
 inline constexpr int kGltfDracoPositionBits = 16;
 
-// Returns the bytes of a glTF 2.0 file holding the assets: one root node per asset (name = asset
-// name) whose extras hold every level of its 2D hulls [output units], and one child node per hull
-// of its finest level, carrying a thin extruded prism mesh [output units] and the
-// KHR_physics_rigid_bodies and OMI_physics_body/OMI_physics_shape colliders that reference it.
-// Deterministic: the same assets always give the same bytes.
+// Returns the bytes of a glTF 2.0 file holding the assets: one node per asset (name = asset name)
+// whose extras point at every level of its 2D hulls [output units] in the buffer, and whose mesh
+// (flat, z = 0: its finest level's hulls as triangle fans) carries the KHR_physics_rigid_bodies and
+// OMI_physics_body/OMI_physics_shape colliders. Deterministic: the same assets always give the
+// same bytes.
 // Throws OutputError if an asset holds a non-finite coordinate or its Draco encoding fails.
 std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options);
 

@@ -1,0 +1,30 @@
+// EXT_meshopt_compression and KHR_mesh_quantization for the glTF writer (gltf_writer.cpp): the
+// grid an asset's coordinates are rounded to, and the compression of one bufferView.
+#pragma once
+
+#include "hullcook/cook/asset.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace hullcook {
+
+// An asset's coordinates as 16-bit integers: x = origin.x + step * qx (and y alike). The step is
+// the bundle's (formats/SPEC.md §9): sqrt(2) * max(0.01 tau, 1/64 px), coarser only when the
+// asset spans more than 65000 steps, so each coordinate moves by at most step / 2.
+struct Quantization {
+  Vec2 origin{0.0, 0.0};  // [output units]
+  double step = 1.0;      // [output units]
+
+  // Throws OutputError naming the asset when the asset does not fit 16 bits.
+  static Quantization of(const CookedAsset& asset);
+  std::int16_t x(double value) const;
+  std::int16_t y(double value) const;
+};
+
+// A bufferView's data compressed by meshoptimizer, as EXT_meshopt_compression decodes it.
+enum class MeshoptMode { attributes, triangles };
+std::string meshopt_compress(std::string_view data, std::size_t stride, MeshoptMode mode);
+
+}  // namespace hullcook
