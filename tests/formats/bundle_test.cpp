@@ -617,5 +617,32 @@ TEST(Crc32, MatchesTheStandardCheckValueAtEveryLengthAndSplit) {
     }
 }
 
+// Large inputs run as several chains whose states are combined (crc32.cpp): around the size where
+// that starts, and at sizes that leave every kind of remainder, against the bitwise definition.
+TEST(Crc32, StripedLargeInputsMatchTheBitwiseDefinition) {
+  std::string bytes(3 * 4096 * 5 + 77, '\0');
+  std::uint32_t seed = 12345;
+  for (char& byte : bytes) byte = static_cast<char>((seed = seed * 1103515245u + 12345u) >> 23);
+  auto bitwise = [](std::uint32_t crc, const char* data, std::size_t size) {
+    std::uint32_t c = ~crc;
+    for (std::size_t i = 0; i < size; ++i) {
+      c ^= static_cast<unsigned char>(data[i]);
+      for (int b = 0; b < 8; ++b) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return ~c;
+  };
+  for (std::size_t size :
+       std::initializer_list<std::size_t>{3 * 4096 - 1, 3 * 4096, 3 * 4096 + 15, 3 * 4096 + 47,
+                                          3 * 4096 + 48, 3 * 4096 * 2 + 33, bytes.size() - 3})
+    for (std::size_t start : {0u, 1u, 3u}) {
+      ASSERT_EQ(format::crc32(0, bytes.data() + start, size),
+                bitwise(0, bytes.data() + start, size))
+          << size << " bytes from " << start;
+      // A running CRC continues through the striped path too.
+      ASSERT_EQ(format::crc32(0xDEADBEEFu, bytes.data() + start, size),
+                bitwise(0xDEADBEEFu, bytes.data() + start, size));
+    }
+}
+
 }  // namespace
 }  // namespace hullcook
