@@ -131,15 +131,9 @@ __attribute__((target("pclmul,sse4.1"))) std::uint32_t fold_clmul(std::uint32_t 
 
 }  // namespace
 
-std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size) noexcept {
+std::uint32_t crc32_portable(std::uint32_t crc, const void* data, std::size_t size) noexcept {
   const auto* bytes = static_cast<const unsigned char*>(data);
   std::uint32_t state = ~crc;
-#ifdef HULLCOOK_CRC32_FOLDING
-  if (size >= 64 && __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("sse4.1")) {
-    const std::size_t folded = size / 16 * 16;
-    return ~fold_bytes(fold_clmul(state, bytes, folded), bytes + folded, size - folded);
-  }
-#endif
   const std::size_t stripe = size / (kStreams * kBlock) * kBlock;
   if (stripe >= kMinStripe) {
     std::uint32_t states[kStreams] = {state};  // the later stripes start from zero
@@ -153,6 +147,17 @@ std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size) noexc
     size -= kStreams * stripe;
   }
   return ~fold_bytes(state, bytes, size);
+}
+
+std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size) noexcept {
+#ifdef HULLCOOK_CRC32_FOLDING
+  if (size >= 64 && __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("sse4.1")) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    const std::size_t folded = size / 16 * 16;
+    return ~fold_bytes(fold_clmul(~crc, bytes, folded), bytes + folded, size - folded);
+  }
+#endif
+  return crc32_portable(crc, data, size);
 }
 
 }  // namespace hullcook::format

@@ -31,8 +31,8 @@ inline std::uint32_t upper(std::int32_t x, std::int32_t y) {
 }
 
 // x86-64 CPUs since 2013 multiply 32-bit lanes and hold 8 of them (AVX2), the baseline only 4
-// with emulated multiplication: GCC and Clang compile the batch check for both and pick one at
-// load time.
+// with emulated multiplication: with GCC the batch check is compiled for both and one is picked
+// at load time (an ifunc); other compilers build the baseline only.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define HULLCOOK_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else

@@ -13,7 +13,7 @@ namespace hullcook::runtime::detail {
 // Returns malformed when hull 0 does not start at vertex 0, when a range is reversed or holds
 // fewer than 3 vertices, or when a hull is not strictly convex and counter-clockwise;
 // out_of_bounds when a range ends past vertex_count. A range error is reported only when every
-// hull before it is convex, as a hull-by-hull check would. Allocates nothing (uses ~10 KB of
+// hull before it is convex, as a hull-by-hull check would. Allocates nothing (uses 6 KB of
 // stack).
 Status validate_hulls(const unsigned char* hull_records, std::uint32_t hull_count,
                       const unsigned char* vertices, std::uint32_t vertex_count) noexcept;

@@ -12,4 +12,7 @@ namespace hullcook::format {
 // Continues a running CRC: crc32(crc32(0, a, n), b, m) == crc32(0, a||b, n+m).
 std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size) noexcept;
 
+// The same by the portable method only, whatever the CPU (for tests and benchmarks).
+std::uint32_t crc32_portable(std::uint32_t crc, const void* data, std::size_t size) noexcept;
+
 }  // namespace hullcook::format
