@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace hullcook {
@@ -75,22 +74,29 @@ struct Picture {
   std::vector<Polygon> polygons;
 };
 
+// The value of attribute `name` in the element text from `from`, or "" (no std::regex: GCC 12
+// warns in it at -O1, which the sanitizer build treats as an error).
+std::string attribute(const std::string& text, const std::string& name, std::size_t from = 0) {
+  const std::string key = " " + name + "=\"";
+  const auto at = text.find(key, from);
+  if (at == std::string::npos) return "";
+  const auto begin = at + key.size();
+  return text.substr(begin, text.find('"', begin) - begin);
+}
+
 Picture read_svg(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
   const std::string svg = text.str();
   Picture picture;
-  std::smatch match;
-  if (std::regex_search(svg, match, std::regex("data-scene=\"([^\"]*)\"")))
-    std::istringstream(match[1]) >> picture.min_x >> picture.min_y >> picture.max_x >>
-        picture.max_y;
-  const std::regex polygon(
-      "<polygon data-kind=\"(\\w+)\" data-body=\"(-?\\d+)\"[^>]* points=\"([^\"]*)\"");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), polygon);
-       it != std::sregex_iterator(); ++it) {
-    Polygon p{(*it)[1], std::stoi((*it)[2]), {}};
-    std::istringstream points((*it)[3]);
+  std::istringstream(attribute(svg, "data-scene")) >> picture.min_x >> picture.min_y >>
+      picture.max_x >> picture.max_y;
+  for (auto at = svg.find("<polygon "); at != std::string::npos;
+       at = svg.find("<polygon ", at + 1)) {
+    const std::string element = svg.substr(at, svg.find("/>", at) - at);
+    Polygon p{attribute(element, "data-kind"), std::stoi(attribute(element, "data-body")), {}};
+    std::istringstream points(attribute(element, "points"));
     double x = 0, y = 0;
     char comma = 0;
     while (points >> x >> comma >> y) p.points.push_back({x, y});
@@ -126,9 +132,8 @@ double penetration(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
 }
 
 double printed_slop(const std::string& output) {
-  std::smatch match;
-  return std::regex_search(output, match, std::regex("slop ([0-9.eE+-]+)")) ? std::stod(match[1])
-                                                                            : std::nan("");
+  const auto at = output.find("; slop ");
+  return at == std::string::npos ? std::nan("") : std::stod(output.substr(at + 7));
 }
 
 // The cooked samples (43 sprites, some round, some long, sprite sheets of hundreds of hulls)
