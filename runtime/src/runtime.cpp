@@ -1,5 +1,6 @@
 #include "hullcook/runtime.h"
 
+#include "hull_validation.h"
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
 
@@ -35,9 +36,6 @@ AssetRecord asset_record(const unsigned char* bytes, const BundleHeader& header,
 LevelRecord level_record(const unsigned char* bytes, const BundleHeader& header, std::size_t i) {
   return load<LevelRecord>(bytes + header.levels_offset + i * sizeof(LevelRecord));
 }
-HullRecord hull_record(const unsigned char* bytes, const BundleHeader& header, std::size_t i) {
-  return load<HullRecord>(bytes + header.hulls_offset + i * sizeof(HullRecord));
-}
 
 // The end of a CSR range: the next record's first index, or the section's count after the last.
 std::uint32_t level_end(const unsigned char* bytes, const BundleHeader& header, std::size_t asset) {
@@ -47,10 +45,6 @@ std::uint32_t level_end(const unsigned char* bytes, const BundleHeader& header, 
 std::uint32_t hull_end(const unsigned char* bytes, const BundleHeader& header, std::size_t level) {
   return level + 1 < header.level_count ? level_record(bytes, header, level + 1).first_hull
                                         : header.hull_count;
-}
-std::uint32_t vertex_end(const unsigned char* bytes, const BundleHeader& header, std::size_t hull) {
-  return hull + 1 < header.hull_count ? hull_record(bytes, header, hull + 1).first_vertex
-                                      : header.vertex_count;
 }
 
 bool finite(float value) { return std::isfinite(value); }
@@ -177,19 +171,8 @@ Status validate_levels_and_hulls(const unsigned char* bytes, const BundleHeader&
     if (end > header.hull_count) return Status::out_of_bounds;
     if (end < record.first_hull) return Status::malformed;
   }
-  const unsigned char* vertices = bytes + header.vertices_offset;
-  for (std::size_t hull = 0; hull < header.hull_count; ++hull) {
-    const HullRecord record = hull_record(bytes, header, hull);
-    if (hull == 0 && record.first_vertex != 0) return Status::malformed;
-    const std::uint32_t end = vertex_end(bytes, header, hull);
-    if (end > header.vertex_count) return Status::out_of_bounds;
-    if (end < record.first_vertex || end - record.first_vertex < format::kMinHullVertices)
-      return Status::malformed;
-    if (!format::hull_is_strictly_convex(vertices + 4u * record.first_vertex,
-                                         end - record.first_vertex))
-      return Status::malformed;
-  }
-  return Status::ok;
+  return detail::validate_hulls(bytes + header.hulls_offset, header.hull_count,
+                                bytes + header.vertices_offset, header.vertex_count);
 }
 
 // For a table too clustered to look every asset up (SPEC §6), in one pass over the slots: each

@@ -1,10 +1,13 @@
-// The runtime's costs: open + validate throughput, and Box2D fixture creation through the adapter
-// against b2PolygonShape::Set with the same points (issue 6 target: adapter overhead <= 10%).
+// The runtime's costs: open + validate throughput beside memcpy of the same bytes, and Box2D
+// fixture creation through the adapter against b2PolygonShape::Set with the same points (issue 6
+// target: adapter overhead <= 10%).
 // The bundle is HULLCOOK_BENCH_BUNDLE when set (e.g. the cooked samples), else a synthetic one
-// of 400 sprites with 12 hulls of 3 to 8 vertices each.
+// of 400 sprites with 12 hulls of 3 to 8 vertices each. Open and memcpy also run on a synthetic
+// 100 MB bundle (issue 21 target: open >= 2 GB/s there); their bytes_per_second compare directly.
 #include "synthetic_assets.h"
 
 #include "hullcook/cook/bundle_writer.h"
+#include "hullcook/format/crc32.h"
 #include "hullcook/runtime.h"
 #ifdef HULLCOOK_BENCH_BOX2D
 #include "hullcook/box2d.h"
@@ -13,6 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -22,16 +26,22 @@ namespace {
 
 using namespace hullcook;
 
-std::string synthetic_bundle() {
+// asset_count sprites of 4 x 4 units at 32 px per unit, each with levels of hull_counts[l] hulls
+// of 3 to 8 vertices.
+std::string synthetic_bundle(int asset_count, const std::vector<int>& hull_counts) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<CookedAsset> assets;
-  for (int a = 0; a < 400; ++a) {
-    std::vector<Ring> hulls;
-    for (int h = 0; h < 12; ++h)
-      hulls.push_back(test::regular_polygon({4 * unit(random), 4 * unit(random)},
-                                            0.2 + unit(random), 3 + h % 6, unit(random)));
-    assets.push_back(test::make_asset("sprites/s" + std::to_string(a) + ".png", {{1.0 / 32, hulls}},
+  for (int a = 0; a < asset_count; ++a) {
+    std::vector<CookedLevel> levels;
+    for (std::size_t l = 0; l < hull_counts.size(); ++l) {
+      std::vector<Ring> hulls;
+      for (int h = 0; h < hull_counts[l]; ++h)
+        hulls.push_back(test::regular_polygon({4 * unit(random), 4 * unit(random)},
+                                              0.2 + unit(random), 3 + h % 6, unit(random)));
+      levels.push_back({(1.0 + 3.0 * l) / 32, std::move(hulls)});
+    }
+    assets.push_back(test::make_asset("sprites/s" + std::to_string(a) + ".png", std::move(levels),
                                       32.0, 128, 128));
   }
   return write_bundle(assets);
@@ -45,13 +55,20 @@ const std::string& bundle_bytes() {
       out << in.rdbuf();
       return out.str();
     }
-    return synthetic_bundle();
+    return synthetic_bundle(400, {12});
   }();
   return bytes;
 }
 
-void BM_OpenAndValidate(benchmark::State& state) {
-  const std::string& bytes = bundle_bytes();
+// 100 MB of sprites shaped like the cooked samples (tests/formats/golden/v1.0/sprites.hcb: 3 KB,
+// 2 levels, 88 hulls and 5.2 vertices per hull per asset), so that names, records and vertices
+// weigh in validation as they do in real bundles.
+const std::string& large_bundle_bytes() {
+  static const std::string bytes = synthetic_bundle(34'000, {60, 28});
+  return bytes;
+}
+
+void open_and_validate(benchmark::State& state, const std::string& bytes) {
   for (auto _ : state) {
     runtime::Bundle bundle;
     const runtime::Status status = bundle.open(bytes.data(), bytes.size());
@@ -61,7 +78,49 @@ void BM_OpenAndValidate(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
   state.counters["bytes"] = static_cast<double>(bytes.size());
 }
+
+// The floor for any pass over the bytes: copying them once (the destination is written once
+// beforehand, so that page faults are not timed).
+void copy_bytes(benchmark::State& state, const std::string& bytes) {
+  std::vector<char> copy(bytes.size(), 1);
+  for (auto _ : state) {
+    std::memcpy(copy.data(), bytes.data(), bytes.size());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
+  state.counters["bytes"] = static_cast<double>(bytes.size());
+}
+
+void BM_OpenAndValidate100MB(benchmark::State& state) {
+  open_and_validate(state, large_bundle_bytes());
+}
+BENCHMARK(BM_OpenAndValidate100MB)->Unit(benchmark::kMillisecond);
+
+// The checksum alone, the part of open() that reads every byte.
+void BM_Crc32_100MB(benchmark::State& state) {
+  const std::string& bytes = large_bundle_bytes();
+  for (auto _ : state) benchmark::DoNotOptimize(format::crc32(0, bytes.data(), bytes.size()));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
+}
+BENCHMARK(BM_Crc32_100MB)->Unit(benchmark::kMillisecond);
+
+// The portable method (slicing-by-16, three streams), which other CPUs and compilers get.
+void BM_Crc32Portable_100MB(benchmark::State& state) {
+  const std::string& bytes = large_bundle_bytes();
+  for (auto _ : state)
+    benchmark::DoNotOptimize(format::crc32_portable(0, bytes.data(), bytes.size()));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * bytes.size()));
+}
+BENCHMARK(BM_Crc32Portable_100MB)->Unit(benchmark::kMillisecond);
+
+void BM_Memcpy100MB(benchmark::State& state) { copy_bytes(state, large_bundle_bytes()); }
+BENCHMARK(BM_Memcpy100MB)->Unit(benchmark::kMillisecond);
+
+void BM_OpenAndValidate(benchmark::State& state) { open_and_validate(state, bundle_bytes()); }
 BENCHMARK(BM_OpenAndValidate);
+
+void BM_Memcpy(benchmark::State& state) { copy_bytes(state, bundle_bytes()); }
+BENCHMARK(BM_Memcpy);
 
 void BM_FindEveryAsset(benchmark::State& state) {
   const std::string& bytes = bundle_bytes();

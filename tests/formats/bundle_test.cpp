@@ -617,5 +617,47 @@ TEST(Crc32, MatchesTheStandardCheckValueAtEveryLengthAndSplit) {
     }
 }
 
+// Large inputs run as several chains whose states are combined, or are folded 64 bytes at a time
+// (crc32.cpp): around the sizes where those start, and at sizes that leave every kind of
+// remainder, against the bitwise definition. crc32 folds with PCLMULQDQ where the CPU has it;
+// crc32_portable is the slicing method everywhere.
+TEST(Crc32, LargeInputsMatchTheBitwiseDefinitionByEitherMethod) {
+  std::string bytes(3 * 4096 * 5 + 77, '\0');
+  std::uint32_t seed = 12345;
+  for (char& byte : bytes) byte = static_cast<char>((seed = seed * 1103515245u + 12345u) >> 23);
+  auto bitwise = [](std::uint32_t crc, const char* data, std::size_t size) {
+    std::uint32_t c = ~crc;
+    for (std::size_t i = 0; i < size; ++i) {
+      c ^= static_cast<unsigned char>(data[i]);
+      for (int b = 0; b < 8; ++b) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return ~c;
+  };
+  const std::initializer_list<std::size_t> sizes = {63,
+                                                    64,
+                                                    65,
+                                                    79,
+                                                    80,
+                                                    127,
+                                                    128,
+                                                    129,
+                                                    3 * 4096 - 1,
+                                                    3 * 4096,
+                                                    3 * 4096 + 15,
+                                                    3 * 4096 + 47,
+                                                    3 * 4096 + 48,
+                                                    3 * 4096 * 2 + 33,
+                                                    bytes.size() - 3};
+  for (auto crc32 : {format::crc32, format::crc32_portable})
+    for (std::size_t size : sizes)
+      for (std::size_t start : {0u, 1u, 3u}) {
+        ASSERT_EQ(crc32(0, bytes.data() + start, size), bitwise(0, bytes.data() + start, size))
+            << size << " bytes from " << start;
+        // A running CRC continues through every path.
+        ASSERT_EQ(crc32(0xDEADBEEFu, bytes.data() + start, size),
+                  bitwise(0xDEADBEEFu, bytes.data() + start, size));
+      }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -186,33 +186,43 @@ inline std::uint32_t name_hash(const char* name, std::size_t length) noexcept {
 }
 
 // Whether a hull's vertices (count VertexRecords at vertices) are strictly convex and
-// counter-clockwise on the integer grid (SPEC §8): every turn strictly left, and the edges' x and
-// y components each change sign at most twice, i.e. the boundary winds exactly once. Exact:
-// within-hull differences fit 17 bits, their cross products 35.
+// counter-clockwise on the integer grid (SPEC §8): every turn strictly left, and the boundary
+// winds exactly once. Exact: within-hull differences fit 17 bits, their cross products 35.
+//
+// The winding is counted as the edges whose direction passes from the lower half-plane (angle in
+// [-pi, 0)) into the upper one ([0, pi)): with every turn in (0, pi), the direction's angle grows
+// monotonically by 2 pi k in total and passes 0 exactly once per turn of the boundary, so k is
+// that count. This equals SPEC §8's sign-change rule (k = 1 changes each sign twice, k >= 2 the
+// sign of y at least four times) and reads each vertex once, without branches: opening a bundle
+// runs it on every stored vertex.
 inline bool hull_is_strictly_convex(const unsigned char* vertices, std::uint32_t count) noexcept {
   if (count < kMinHullVertices) return false;
-  auto vertex = [&](std::uint32_t i) { return load<VertexRecord>(vertices + 4 * (i % count)); };
-  int x_sign_changes = 0, y_sign_changes = 0;
-  int last_x_sign = 0, last_y_sign = 0, first_x_sign = 0, first_y_sign = 0;
-  auto track = [](std::int64_t component, int& last, int& first, int& changes) {
-    const int sign = (component > 0) - (component < 0);
-    if (sign == 0) return;
-    if (last != 0 && sign != last) ++changes;
-    if (first == 0) first = sign;
-    last = sign;
+  struct Edge {
+    std::int32_t x, y;
   };
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const VertexRecord a = vertex(i), b = vertex(i + 1), c = vertex(i + 2);
-    const std::int64_t ex = std::int64_t{b.dx} - a.dx, ey = std::int64_t{b.dy} - a.dy;
-    const std::int64_t fx = std::int64_t{c.dx} - b.dx, fy = std::int64_t{c.dy} - b.dy;
-    if (ex * fy - ey * fx <= 0) return false;
-    track(ex, last_x_sign, first_x_sign, x_sign_changes);
-    track(ey, last_y_sign, first_y_sign, y_sign_changes);
+  auto upper = [](Edge e) { return static_cast<unsigned>(e.y > 0 || (e.y == 0 && e.x > 0)); };
+  const VertexRecord first = load<VertexRecord>(vertices);
+  VertexRecord from = load<VertexRecord>(vertices + 4);
+  const Edge first_edge{from.dx - first.dx, from.dy - first.dy};
+  Edge previous = first_edge;
+  unsigned previous_upper = upper(first_edge);
+  bool left_turns = true;
+  unsigned rises = 0;
+  auto turn = [&](Edge edge) {
+    left_turns &= std::int64_t{previous.x} * edge.y - std::int64_t{previous.y} * edge.x > 0;
+    const unsigned edge_upper = upper(edge);
+    rises += ~previous_upper & edge_upper;
+    previous = edge;
+    previous_upper = edge_upper;
+  };
+  for (std::uint32_t i = 2; i < count; ++i) {
+    const VertexRecord to = load<VertexRecord>(vertices + 4 * std::size_t{i});
+    turn({to.dx - from.dx, to.dy - from.dy});
+    from = to;
   }
-  // Close the cycle: the last edge's sign against the first edge's.
-  if (last_x_sign != 0 && first_x_sign != 0 && last_x_sign != first_x_sign) ++x_sign_changes;
-  if (last_y_sign != 0 && first_y_sign != 0 && last_y_sign != first_y_sign) ++y_sign_changes;
-  return x_sign_changes <= 2 && y_sign_changes <= 2;
+  turn({first.dx - from.dx, first.dy - from.dy});  // the closing edge
+  turn(first_edge);                                // and the turn back onto the first
+  return left_turns && rises == 1;
 }
 
 // The slot count a writer starts from for asset_count assets: load factor <= 0.75, one slot always
