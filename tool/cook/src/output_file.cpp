@@ -86,8 +86,8 @@ std::filesystem::path write_temporary(const std::filesystem::path& path, std::st
   remove_stale_temporaries(directory, path);
   std::random_device entropy;
   std::filesystem::path temporary =
-      directory / (temporary_prefix(path) + std::to_string(::getpid()) + "-" +
-                   std::to_string(entropy()));
+      directory /
+      (temporary_prefix(path) + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
   pending.push_back(std::make_unique<PendingTemporary>(temporary));
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) {
