@@ -211,7 +211,10 @@ TEST_F(Interrupt, Issue19_SigintStopsWithExit130AndNoTemporary) {
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(random)));
     kill(pid, SIGINT);
     const int code = wait_for(pid);
-    EXPECT_TRUE(code == 130 || code == 0) << "run " << run << ": exit " << code;
+    // 1000 + SIGINT: the signal came before main installed its handler (a slow start under
+    // load), when there is nothing to clean up yet.
+    EXPECT_TRUE(code == 130 || code == 0 || code == 1000 + SIGINT)
+        << "run " << run << ": exit " << code;
     if (code == 130) ++interrupted;
     EXPECT_EQ(temporaries_in(directory), std::vector<std::string>{}) << "run " << run;
   }

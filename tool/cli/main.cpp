@@ -49,6 +49,8 @@ CommandRegistration::CommandRegistration(int order, AddCommand add) {
 
 int main(int argc, char** argv) {
   using namespace hullcook;
+  // First, so that a Ctrl-C during start-up or parsing also exits 130 as the shell expects.
+  cli::install_signal_handlers();
   CLI::App app{
       "hullcook " HULLCOOK_VERSION
       ": traces sprite silhouettes, splits them into approximately convex pieces (Lien-Amato ACD)\n"
@@ -81,7 +83,6 @@ int main(int argc, char** argv) {
     std::cout << app.help();
     return app.get_subcommands().empty() && argc > 1 ? static_cast<int>(ExitCode::usage) : 0;
   }
-  cli::install_signal_handlers();
   try {
     return action();
   } catch (const Error& e) {
