@@ -8,8 +8,9 @@
 //   4. the whole cook with 1 and 2 threads, and the peak memory of the cooking process;
 //   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent).
 // On samples/sprites and on a synthetic set written here (many sizes, holes, many blobs).
-// Options: --runs N (repetitions, default 5), --quick (fewer and smaller images); any other
-// option (scripts/bench passes Google Benchmark's) is ignored.
+// Options: --runs N (repetitions, default 5), --quick (fewer and smaller images),
+// --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it); any
+// other option (scripts/bench passes Google Benchmark's) is ignored.
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/trace/trace.h"
@@ -537,6 +538,11 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
       runs = std::max(1, std::atoi(argv[++i]));
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    if (std::strcmp(argv[i], "--write-synthetic") == 0 && i + 1 < argc) {
+      const std::vector<fs::path> files = write_synthetic_set(argv[i + 1], quick);
+      std::printf("bench_cook: %zu synthetic images in %s\n", files.size(), argv[i + 1]);
+      return 0;
+    }
   }
   const fs::path scratch =
       fs::temp_directory_path() / ("hullcook_bench_cook_" + std::to_string(getpid()));

@@ -192,6 +192,72 @@ TEST(Cook, Issue19_OutlinesFreedGiveTheSameBundle) {
             write_gltf(second.assets, GltfOptions{true, false}));
 }
 
+// Reads what a BundleStream wrote into an anonymous file.
+std::string streamed_bundle(const BundleStream& stream, const std::vector<CookedAsset>& assets,
+                            const std::vector<std::size_t>& keys) {
+  std::FILE* file = std::tmpfile();
+  EXPECT_NE(file, nullptr);
+  stream.write(file, assets, keys);
+  std::string bytes(static_cast<std::size_t>(std::ftell(file)), '\0');
+  std::rewind(file);
+  EXPECT_EQ(std::fread(bytes.data(), 1, bytes.size(), file), bytes.size());
+  std::fclose(file);
+  return bytes;
+}
+
+// Issue 19: a cook streams its bundle (each asset spilled as it is cooked, its hulls then
+// dropped) into the bytes write_bundle gives for the whole result, on two threads.
+TEST(Cook, Issue19_StreamedBundleKeepsNoHullsAndGivesTheSameBytes) {
+  Settings whole;
+  whole.threads = 2;
+  Settings streamed = whole;
+  streamed.keep_hulls = false;
+  streamed.keep_outlines = false;
+  BundleStream stream;
+  const CookResult first = cook({kSprites}, whole);
+  const CookResult second =
+      cook({kSprites}, streamed,
+           [&stream](std::size_t index, const CookedAsset& asset) { stream.add(index, asset); });
+  ASSERT_EQ(first.assets.size(), second.assets.size());
+  std::size_t hulls = 0;
+  for (std::size_t i = 0; i < second.assets.size(); ++i) {
+    const CookedAsset& asset = second.assets[i];
+    ASSERT_FALSE(asset.levels.empty()) << asset.name;
+    EXPECT_TRUE(asset.levels.front().hulls.empty()) << asset.name;
+    EXPECT_EQ(asset.stats.hulls, first.assets[i].levels.front().hulls.size()) << asset.name;
+    hulls += asset.stats.hulls;
+  }
+  EXPECT_GT(hulls, 100u);
+  EXPECT_EQ(streamed_bundle(stream, second.assets, second.cooked_index),
+            write_bundle(first.assets));
+}
+
+// The stream is keyed, not ordered: assets added in any order (from any thread), some with
+// physics and one without levels, are written in the order asked, as write_bundle writes them.
+TEST(BundleStream, AssetsAddedInAnyOrderAreWrittenInTheOrderAsked) {
+  Settings settings;
+  settings.threads = 1;
+  settings.lods = {Tolerance{6.0, false}};
+  std::vector<CookedAsset> assets = cook({kSprites}, settings).assets;
+  assets.resize(12);
+  assets[3].physics = PhysicsProperties{2.0f, 0.5f, 0.25f, true, 2, 0xFFFD};
+  assets[7].physics = PhysicsProperties{};
+  assets[5].levels.clear();
+  std::vector<std::size_t> keys(assets.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = 100 + (i * 7) % keys.size();
+  BundleStream stream;
+  for (std::size_t k = assets.size(); k-- > 0;) stream.add(keys[k], assets[k]);
+  EXPECT_EQ(streamed_bundle(stream, assets, keys), write_bundle(assets));
+
+  // A key never added, or two assets of one name, are refused.
+  std::vector<std::size_t> unknown = keys;
+  unknown[0] = 99;
+  EXPECT_THROW(streamed_bundle(stream, assets, unknown), std::logic_error);
+  std::vector<CookedAsset> twins = assets;
+  twins[1].name = twins[0].name;
+  EXPECT_THROW(streamed_bundle(stream, twins, keys), OutputError);
+}
+
 // Issue 19: no leak. Cooking the samples 20 times in one process keeps the resident memory of the
 // second time (the first warms the allocator's pools); the sanitizer run checks leaks by itself.
 TEST(Cook, Issue19_CookingTwentyTimesDoesNotGrowResidentMemory) {

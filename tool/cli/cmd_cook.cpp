@@ -3,6 +3,7 @@
 #include "cook_options.h"
 #include "outputs.h"
 
+#include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/depfile.h"
 #include "hullcook/cook/output_file.h"
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 namespace hullcook::cli {
 namespace {
@@ -32,10 +34,9 @@ void print_summary(const CookResult& result) {
   std::printf("%-56s %9s %7s %9s %13s %9s\n", "asset", "vertices", "pieces", "hulls",
               "max concavity", "ms");
   for (const CookedAsset& asset : result.assets) {
-    std::size_t hulls = asset.levels.empty() ? 0 : asset.levels.front().hulls.size();
     std::printf("%-56s %9zu %7zu %9zu %13.4g %9.2f\n", asset.name.c_str(),
-                asset.stats.traced_vertices, asset.stats.pieces, hulls, asset.stats.max_concavity,
-                asset.stats.total_ms);
+                asset.stats.traced_vertices, asset.stats.pieces, asset.stats.hulls,
+                asset.stats.max_concavity, asset.stats.total_ms);
   }
 }
 
@@ -119,14 +120,32 @@ void add_cook(CLI::App& root, CommandAction& action) {
           command->settings.keep_outlines = true;
         }
       }
-      CookResult result = cook(inputs, command->settings);
-      if (!command->name.empty()) rename_assets(result, inputs.front(), command->name);
-      auto files = output_files(result, outputs, command->settings, files_read(result));
-      if (!command->depfile.empty()) {
-        files.emplace_back(command->depfile,
-                           depfile_text(outputs, cook_dependencies(result, inputs)));
+      // A bundle is written as the cook goes (issue 19: the memory of 10,000 assets is that of
+      // 100); the hulls stay in memory only when another output needs them.
+      std::unique_ptr<BundleStream> stream;
+      AssetCooked on_cooked;
+      bool hulls_needed = !command->report.empty();
+      for (const std::filesystem::path& output : outputs) {
+        if (output.extension() != ".hcb")
+          hulls_needed = true;
+        else if (!stream)
+          stream = std::make_unique<BundleStream>();
       }
-      if (!command->report.empty()) files.emplace_back(command->report, cook_report(result, true));
+      if (stream) {
+        on_cooked = [&stream](std::size_t index, const CookedAsset& asset) {
+          stream->add(index, asset);
+        };
+      }
+      command->settings.keep_hulls = hulls_needed || !stream;
+      CookResult result = cook(inputs, command->settings, on_cooked);
+      if (!command->name.empty()) rename_assets(result, inputs.front(), command->name);
+      auto files =
+          output_files(result, outputs, command->settings, files_read(result), stream.get());
+      if (!command->depfile.empty()) {
+        files.push_back(
+            {command->depfile, depfile_text(outputs, cook_dependencies(result, inputs))});
+      }
+      if (!command->report.empty()) files.push_back({command->report, cook_report(result, true)});
       write_files_atomically(files);
       if (!command->quiet) print_summary(result);
       print_warnings(result);

@@ -90,9 +90,9 @@ void add_link(CLI::App& root, CommandAction& action) {
       settings.meshopt = command->meshopt;
       auto files = output_files(result, outputs, settings, fragments);
       if (!command->depfile.empty()) {
-        files.emplace_back(command->depfile, depfile_text(outputs, fragments));
+        files.push_back({command->depfile, depfile_text(outputs, fragments)});
       }
-      if (!command->report.empty()) files.emplace_back(command->report, cook_report(result, false));
+      if (!command->report.empty()) files.push_back({command->report, cook_report(result, false)});
       write_files_atomically(files);
       if (!command->quiet) {
         std::printf("linked %zu assets from %zu fragments into %s\n", result.assets.size(),

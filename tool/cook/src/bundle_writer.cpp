@@ -6,11 +6,15 @@
 #include "hullcook/format/crc32.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <set>
+#include <stdexcept>
 #include <string_view>
 
 namespace hullcook {
@@ -255,31 +259,78 @@ std::vector<std::uint32_t> name_table(const std::vector<CookedAsset>& assets) {
       "bundle: too many asset names share their FNV-1a hash for the name table; rename some");
 }
 
-}  // namespace
+// An asset's records, ready to be placed in a bundle: its quantized hulls (first_vertex counted
+// from the asset's first vertex) and the shape of its levels.
+struct AssetRecords {
+  AssetShape shape;
+  std::vector<HullRecord> hulls;
+  std::vector<VertexRecord> vertices;
+};
 
-std::string write_bundle(const std::vector<CookedAsset>& assets) {
+AssetRecords asset_records(const CookedAsset& asset) {
+  // An asset without levels is stored with one empty level at its τ. The levels are read in
+  // place, not copied: a cook's memory at scale is mostly its hulls.
+  const std::vector<CookedLevel> no_levels{{asset.tau, {}}};
+  const std::vector<CookedLevel>& levels = asset.levels.empty() ? no_levels : asset.levels;
+  check_asset(asset, levels);
+  QuantizedAsset quantized = quantize_asset(asset, levels);
+  AssetRecords records;
+  records.shape.step = quantized.step;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    records.shape.level_taus.push_back(static_cast<float>(levels[l].tau));
+    records.shape.level_hulls.push_back(to_u32(quantized.levels[l].size()));
+    for (QuantizedHull& hull : quantized.levels[l]) {
+      HullRecord record = hull.record;
+      record.first_vertex = to_u32(records.vertices.size());
+      records.hulls.push_back(record);
+      records.vertices.insert(records.vertices.end(), hull.vertices.begin(), hull.vertices.end());
+    }
+  }
+  records.shape.hull_count = to_u32(records.hulls.size());
+  records.shape.vertex_count = to_u32(records.vertices.size());
+  return records;
+}
+
+// Where assemble reads each asset's records: held in memory (write_bundle) or spilled to a file
+// as a cook goes (BundleStream).
+class RecordSource {
+ public:
+  virtual ~RecordSource() = default;
+  virtual const AssetShape& shape(std::size_t asset) const = 0;
+  virtual void read(std::size_t asset, std::vector<HullRecord>& hulls,
+                    std::vector<VertexRecord>& vertices) const = 0;
+};
+
+class RecordsInMemory : public RecordSource {
+ public:
+  explicit RecordsInMemory(std::vector<AssetRecords> records) : records_(std::move(records)) {}
+  const AssetShape& shape(std::size_t asset) const override { return records_[asset].shape; }
+  void read(std::size_t asset, std::vector<HullRecord>& hulls,
+            std::vector<VertexRecord>& vertices) const override {
+    hulls = records_[asset].hulls;
+    vertices = records_[asset].vertices;
+  }
+
+ private:
+  std::vector<AssetRecords> records_;
+};
+
+// Lays the bundle out (SPEC §2) and hands its bytes to append in file order, the header first
+// (checksum 0); returns the header with its checksum, for the caller to put at offset 0.
+template <typename Append>
+BundleHeader assemble(const std::vector<CookedAsset>& assets, const RecordSource& source,
+                      Append&& append) {
   std::set<std::string_view> names;
-  std::vector<std::vector<float>> level_taus;  // per asset: its levels' τ
-  std::vector<QuantizedAsset> quantized;
   bool any_physics = false;
   std::size_t level_count = 0, hull_count = 0, vertex_count = 0, strings_size = 0;
-  for (const CookedAsset& asset : assets) {
-    if (!names.insert(asset.name).second) fail(asset, "two assets have this name");
-    // An asset without levels is stored with one empty level at its τ. The levels are read in
-    // place, not copied: a cook's memory at scale is mostly its hulls.
-    const std::vector<CookedLevel> no_levels{{asset.tau, {}}};
-    const std::vector<CookedLevel>& levels = asset.levels.empty() ? no_levels : asset.levels;
-    check_asset(asset, levels);
-    quantized.push_back(quantize_asset(asset, levels));
-    std::vector<float>& taus = level_taus.emplace_back();
-    for (const CookedLevel& level : levels) taus.push_back(static_cast<float>(level.tau));
-    any_physics = any_physics || asset.physics.has_value();
-    level_count += quantized.back().levels.size();
-    for (const auto& level : quantized.back().levels) {
-      hull_count += level.size();
-      for (const QuantizedHull& hull : level) vertex_count += hull.vertices.size();
-    }
-    strings_size += asset.name.size() + 1;
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    if (!names.insert(assets[i].name).second) fail(assets[i], "two assets have this name");
+    const AssetShape& shape = source.shape(i);
+    any_physics = any_physics || assets[i].physics.has_value();
+    level_count += shape.level_taus.size();
+    hull_count += shape.hull_count;
+    vertex_count += shape.vertex_count;
+    strings_size += assets[i].name.size() + 1;
   }
 
   BundleHeader header{};
@@ -308,8 +359,15 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
   header.strings_offset = place(strings_size, 1);
   header.total_size = to_u32(end);
 
-  std::string bytes(end, '\0');
-  std::uint32_t level_index = 0, hull_index = 0, vertex_index = 0, name_offset = 0;
+  std::uint32_t crc = 0;
+  auto put_bytes = [&](const void* data, std::size_t size) {
+    crc = format::crc32(crc, data, size);
+    append(data, size);
+  };
+  auto put_record = [&](const auto& record) { put_bytes(&record, sizeof record); };
+  append(&header, sizeof header);
+
+  std::uint32_t level_index = 0, name_offset = 0;
   for (std::size_t i = 0; i < assets.size(); ++i) {
     const CookedAsset& asset = assets[i];
     AssetRecord record{};
@@ -325,44 +383,145 @@ std::string write_bundle(const std::vector<CookedAsset>& assets) {
     record.pixels_per_unit = static_cast<float>(asset.pixels_per_unit);
     record.pivot_u = static_cast<float>(asset.pivot.x);
     record.pivot_v = static_cast<float>(asset.pivot.y);
-    record.quant_step = quantized[i].step;
-    put(bytes, header.assets_offset + i * sizeof(AssetRecord), record);
-
-    if (asset.physics) {
-      PhysicsRecord physics{};
-      physics.density = asset.physics->density;
-      physics.friction = asset.physics->friction;
-      physics.restitution = asset.physics->restitution;
-      physics.category_bits = asset.physics->category_bits;
-      physics.mask_bits = asset.physics->mask_bits;
-      physics.flags = asset.physics->sensor ? format::kPhysicsSensor : 0;
-      put(bytes, header.physics_offset + i * sizeof(PhysicsRecord), physics);
-    }
-
-    for (std::size_t l = 0; l < quantized[i].levels.size(); ++l) {
-      const LevelRecord level{level_taus[i][l], hull_index};
-      put(bytes, header.levels_offset + std::size_t{level_index++} * sizeof(LevelRecord), level);
-      for (const QuantizedHull& hull : quantized[i].levels[l]) {
-        HullRecord hull_record = hull.record;
-        hull_record.first_vertex = vertex_index;
-        put(bytes, header.hulls_offset + std::size_t{hull_index++} * sizeof(HullRecord),
-            hull_record);
-        for (const VertexRecord& v : hull.vertices)
-          put(bytes, header.vertices_offset + std::size_t{vertex_index++} * sizeof(VertexRecord),
-              v);
-      }
-    }
-    std::memcpy(bytes.data() + header.strings_offset + name_offset, asset.name.data(),
-                asset.name.size());
+    record.quant_step = source.shape(i).step;
+    put_record(record);
+    level_index += static_cast<std::uint32_t>(source.shape(i).level_taus.size());
     name_offset += static_cast<std::uint32_t>(asset.name.size() + 1);
   }
-  for (std::size_t s = 0; s < slots.size(); ++s)
-    put(bytes, header.slots_offset + s * sizeof(std::uint32_t), slots[s]);
+  if (any_physics) {
+    for (const CookedAsset& asset : assets) {
+      PhysicsRecord physics{};
+      if (asset.physics) {
+        physics.density = asset.physics->density;
+        physics.friction = asset.physics->friction;
+        physics.restitution = asset.physics->restitution;
+        physics.category_bits = asset.physics->category_bits;
+        physics.mask_bits = asset.physics->mask_bits;
+        physics.flags = asset.physics->sensor ? format::kPhysicsSensor : 0;
+      }
+      put_record(physics);
+    }
+  }
+  put_bytes(slots.data(), slots.size() * sizeof(std::uint32_t));
+  std::uint32_t hull_index = 0;
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    const AssetShape& shape = source.shape(i);
+    for (std::size_t l = 0; l < shape.level_taus.size(); ++l) {
+      put_record(LevelRecord{shape.level_taus[l], hull_index});
+      hull_index += shape.level_hulls[l];
+    }
+  }
+  // Hulls, then vertices: each asset's records are read twice rather than all held at once.
+  std::vector<HullRecord> hulls;
+  std::vector<VertexRecord> vertices;
+  std::uint32_t vertex_index = 0;
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    source.read(i, hulls, vertices);
+    for (HullRecord& hull : hulls) hull.first_vertex += vertex_index;
+    put_bytes(hulls.data(), hulls.size() * sizeof(HullRecord));
+    vertex_index += source.shape(i).vertex_count;
+  }
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    source.read(i, hulls, vertices);
+    put_bytes(vertices.data(), vertices.size() * sizeof(VertexRecord));
+  }
+  for (const CookedAsset& asset : assets) put_bytes(asset.name.c_str(), asset.name.size() + 1);
+  header.checksum = crc;
+  return header;
+}
 
-  header.checksum =
-      format::crc32(0, bytes.data() + sizeof(BundleHeader), bytes.size() - sizeof(BundleHeader));
+[[noreturn]] void spill_failed(const char* what) {
+  throw OutputError(std::string("bundle: cannot ") + what +
+                    " the temporary file of a streamed bundle: " + std::strerror(errno));
+}
+
+}  // namespace
+
+std::string write_bundle(const std::vector<CookedAsset>& assets) {
+  std::vector<AssetRecords> records;
+  records.reserve(assets.size());
+  for (const CookedAsset& asset : assets) records.push_back(asset_records(asset));
+  std::string bytes;
+  const BundleHeader header = assemble(
+      assets, RecordsInMemory(std::move(records)),
+      [&](const void* data, std::size_t n) { bytes.append(static_cast<const char*>(data), n); });
   put(bytes, 0, header);
   return bytes;
+}
+
+// ---- BundleStream ------------------------------------------------------------------------------
+
+BundleStream::BundleStream() : spill_(std::tmpfile()) {
+  if (!spill_) spill_failed("create");
+}
+
+BundleStream::~BundleStream() {
+  if (spill_) std::fclose(spill_);
+}
+
+void BundleStream::add(std::size_t key, const CookedAsset& asset) {
+  AssetRecords records = asset_records(asset);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (key >= stored_.size()) stored_.resize(key + 1);
+  Stored& stored = stored_[key];
+  stored.shape = std::move(records.shape);
+  stored.offset = spilled_;
+  const std::size_t hull_bytes = records.hulls.size() * sizeof(HullRecord);
+  const std::size_t vertex_bytes = records.vertices.size() * sizeof(VertexRecord);
+  if (std::fwrite(records.hulls.data(), 1, hull_bytes, spill_) != hull_bytes ||
+      std::fwrite(records.vertices.data(), 1, vertex_bytes, spill_) != vertex_bytes) {
+    spill_failed("write");
+  }
+  spilled_ += hull_bytes + vertex_bytes;
+  stored.added = true;
+}
+
+void BundleStream::write(std::FILE* out, const std::vector<CookedAsset>& assets,
+                         const std::vector<std::size_t>& keys) const {
+  // The records of assets[i] were added under keys[i].
+  class Spilled : public RecordSource {
+   public:
+    Spilled(const BundleStream& stream, const std::vector<std::size_t>& keys)
+        : stream_(stream), keys_(keys) {}
+    const AssetShape& shape(std::size_t asset) const override { return stored(asset).shape; }
+    void read(std::size_t asset, std::vector<HullRecord>& hulls,
+              std::vector<VertexRecord>& vertices) const override {
+      const Stored& at = stored(asset);
+      hulls.resize(at.shape.hull_count);
+      vertices.resize(at.shape.vertex_count);
+      const std::size_t hull_bytes = hulls.size() * sizeof(HullRecord);
+      const std::size_t vertex_bytes = vertices.size() * sizeof(VertexRecord);
+      if (std::fflush(stream_.spill_) != 0 ||
+          std::fseek(stream_.spill_, static_cast<long>(at.offset), SEEK_SET) != 0 ||
+          std::fread(hulls.data(), 1, hull_bytes, stream_.spill_) != hull_bytes ||
+          std::fread(vertices.data(), 1, vertex_bytes, stream_.spill_) != vertex_bytes) {
+        spill_failed("read");
+      }
+    }
+
+   private:
+    const Stored& stored(std::size_t asset) const {
+      const std::size_t key = keys_.at(asset);
+      if (key >= stream_.stored_.size() || !stream_.stored_[key].added) {
+        throw std::logic_error("bundle: an asset was written that was never added");
+      }
+      return stream_.stored_[key];
+    }
+    const BundleStream& stream_;
+    const std::vector<std::size_t>& keys_;
+  };
+  if (keys.size() != assets.size()) throw std::logic_error("bundle: one key per asset");
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const long start = std::ftell(out);
+  const BundleHeader header =
+      assemble(assets, Spilled(*this, keys), [&](const void* data, std::size_t n) {
+        if (std::fwrite(data, 1, n, out) != n) throw OutputError(std::strerror(errno));
+      });
+  if (std::fseek(out, start, SEEK_SET) != 0 ||
+      std::fwrite(&header, 1, sizeof header, out) != sizeof header) {
+    throw OutputError(std::strerror(errno));
+  }
+  std::fseek(out, 0, SEEK_END);
 }
 
 }  // namespace hullcook

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -40,7 +41,9 @@ double milliseconds_since(Clock::time_point start) {
 }
 
 struct InputFile {
-  std::filesystem::path path;
+  // A string, not a std::filesystem::path: a path holds a list of its components, which at
+  // 10,000 assets was a fifth of a cook's memory (issue 19).
+  std::string path;
   std::string name;  // relative to the input root, '/'-separated
   // A cell of a grid (--grid): the sheet, decoded once for all its cells, and where it lies.
   std::shared_ptr<const AlphaImage> sheet;
@@ -57,7 +60,7 @@ TraceSettings trace_settings(const Settings& settings, double simplify_px);
 void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
                     const std::string& name, const Settings& settings) {
   if (!settings.grid || is_poly_file(path)) {
-    files.push_back({path, name, nullptr, {}, 0});
+    files.push_back({path.string(), name, nullptr, {}, 0});
     return;
   }
   const auto start = Clock::now();
@@ -73,7 +76,7 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
   }
   const std::size_t first = files.size();
   for (const GridCell& cell : cells) {
-    files.push_back({path, name + "/" + std::to_string(cell.index), sheet, cell,
+    files.push_back({path.string(), name + "/" + std::to_string(cell.index), sheet, cell,
                      files.size() == first ? decode_ms : 0});
   }
   std::sort(files.begin() + static_cast<std::ptrdiff_t>(first), files.end(),
@@ -107,7 +110,8 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       }
       std::sort(found.begin(), found.end(),
                 [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
-      files.insert(files.end(), found.begin(), found.end());
+      files.insert(files.end(), std::make_move_iterator(found.begin()),
+                   std::make_move_iterator(found.end()));
     } else if (std::filesystem::is_regular_file(input, error)) {
       add_input_file(files, input, input.filename().generic_string(), settings);
     } else {
@@ -117,7 +121,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
   std::set<std::string> names;
   for (const InputFile& file : files) {
     if (!names.insert(file.name).second) {
-      throw InputError(file.path.string() + ": two inputs would both be named '" + file.name +
+      throw InputError(file.path + ": two inputs would both be named '" + file.name +
                        "'; cook them separately or from a common directory");
     }
   }
@@ -385,7 +389,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
       is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
   CookedAsset asset;
   asset.name = file.name;
-  asset.source = file.path.generic_string();
+  asset.source = std::filesystem::path(file.path).generic_string();
   asset.image_width = input.width;
   asset.image_height = input.height;
   asset.pixels_per_unit = settings.pixels_per_unit;
@@ -478,6 +482,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
     asset.levels.push_back(std::move(level));
   }
   enforce_contract(asset.source, violations);
+  asset.stats.hulls = asset.levels.empty() ? 0 : asset.levels.front().hulls.size();
   if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
   asset.stats.total_ms = milliseconds_since(start);
   return asset;
@@ -487,21 +492,25 @@ CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned t
 // directory without images is: a wrong --grid or --alpha, most likely.
 void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
   std::vector<CookedAsset> kept;
-  std::map<std::filesystem::path, bool> sheet_has_cells;
+  std::vector<std::size_t> kept_index;
+  std::map<std::string, bool> sheet_has_cells;
   for (std::size_t i = 0; i < files.size(); ++i) {
     // By its hulls: the regions may be freed already (Settings::keep_outlines).
     const CookedAsset& asset = result.assets[i];
-    const bool empty_cell =
-        files[i].sheet && (asset.levels.empty() || asset.levels.front().hulls.empty());
+    const bool empty_cell = files[i].sheet && asset.stats.hulls == 0;
     if (files[i].sheet) sheet_has_cells[files[i].path] |= !empty_cell;
-    if (!empty_cell) kept.push_back(std::move(result.assets[i]));
+    if (!empty_cell) {
+      kept.push_back(std::move(result.assets[i]));
+      kept_index.push_back(result.cooked_index[i]);
+    }
   }
   for (const auto& [sheet, has_cells] : sheet_has_cells) {
     if (!has_cells) {
-      throw InputError(sheet.string() + ": every cell of the grid is empty (--grid, --alpha)");
+      throw InputError(sheet + ": every cell of the grid is empty (--grid, --alpha)");
     }
   }
   result.assets = std::move(kept);
+  result.cooked_index = std::move(kept_index);
 }
 
 }  // namespace
@@ -538,7 +547,8 @@ std::filesystem::path physics_sidecar(const std::filesystem::path& input) {
   return sidecar;
 }
 
-CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings) {
+CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings,
+                const AssetCooked& on_cooked) {
   if (!parse_measure(settings.measure)) {
     throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
   }
@@ -554,6 +564,8 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   });
   CookResult result;
   result.assets.resize(files.size());
+  result.cooked_index.resize(files.size());
+  std::iota(result.cooked_index.begin(), result.cooked_index.end(), std::size_t{0});
 
   // Assets are independent: cook them on a pool of threads, each into its own
   // slot, so the result never depends on the thread count. The first error (in
@@ -583,6 +595,10 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
       const std::size_t i = order[k];
       try {
         result.assets[i] = cook_one(files[i], settings, per_asset);
+        if (on_cooked) on_cooked(i, result.assets[i]);
+        if (!settings.keep_hulls) {
+          for (CookedLevel& level : result.assets[i].levels) std::vector<Ring>().swap(level.hulls);
+        }
         if (!settings.keep_outlines) {
           // Checked already: only the hulls go on to the writers.
           std::vector<Region>().swap(result.assets[i].regions);
@@ -592,7 +608,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
         // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
         // violation, with the asset.
         errors[i] = std::make_exception_ptr(
-            ContractError(files[i].path.string() + ": internal error: " + e.what()));
+            ContractError(files[i].path + ": internal error: " + e.what()));
       } catch (...) {
         errors[i] = std::current_exception();
       }

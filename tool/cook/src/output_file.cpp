@@ -76,10 +76,11 @@ void remove_stale_temporaries(const std::filesystem::path& directory,
   }
 }
 
-// Writes bytes to a new temporary file beside path (same directory, so that the rename is
-// atomic) and returns its name. Throws OutputError naming path; on failure nothing is left.
-std::filesystem::path write_temporary(const std::filesystem::path& path, std::string_view bytes,
+// Writes file to a new temporary file beside its path (same directory, so that the rename is
+// atomic) and returns its name. Throws OutputError naming the path; on failure nothing is left.
+std::filesystem::path write_temporary(const OutputFile& output,
                                       std::vector<std::unique_ptr<PendingTemporary>>& pending) {
+  const std::filesystem::path& path = output.path;
   check_directory_of(path);
   std::filesystem::path directory = path.parent_path();
   if (directory.empty()) directory = ".";
@@ -93,12 +94,27 @@ std::filesystem::path write_temporary(const std::filesystem::path& path, std::st
   if (!file) {
     throw OutputError(path.string() + ": cannot write: " + std::strerror(errno));
   }
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  int write_errno = errno;
-  ok = (std::fclose(file) == 0) && ok;
-  if (!ok) {
+  std::string problem;
+  if (output.write) {
+    try {
+      output.write(file);
+      if (std::ferror(file)) problem = std::strerror(errno);
+    } catch (const OutputError& e) {
+      problem = e.what();
+    } catch (...) {
+      std::fclose(file);
+      std::remove(temporary.c_str());
+      throw;
+    }
+  } else if (std::fwrite(output.bytes.data(), 1, output.bytes.size(), file) !=
+             output.bytes.size()) {
+    problem = std::strerror(errno);
+  }
+  const int close_errno = std::fclose(file) == 0 ? 0 : errno;
+  if (problem.empty() && close_errno != 0) problem = std::strerror(close_errno);
+  if (!problem.empty()) {
     std::remove(temporary.c_str());
-    throw OutputError(path.string() + ": cannot write: " + std::strerror(write_errno));
+    throw OutputError(path.string() + ": cannot write: " + problem);
   }
   return temporary;
 }
@@ -125,27 +141,24 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   write_files_atomically({{path, std::string(bytes)}});
 }
 
-void write_files_atomically(
-    const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+void write_files_atomically(const std::vector<OutputFile>& files) {
   std::vector<std::filesystem::path> temporaries;
   std::vector<std::unique_ptr<PendingTemporary>> pending;  // until renamed or removed
   auto remove_temporaries = [&](std::size_t from) {
     for (std::size_t k = from; k < temporaries.size(); ++k) std::remove(temporaries[k].c_str());
   };
   try {
-    for (const auto& [path, bytes] : files) {
-      temporaries.push_back(write_temporary(path, bytes, pending));
-    }
+    for (const OutputFile& file : files) temporaries.push_back(write_temporary(file, pending));
   } catch (...) {
     remove_temporaries(0);
     throw;
   }
   for (std::size_t k = 0; k < files.size(); ++k) {
     std::error_code error;
-    std::filesystem::rename(temporaries[k], files[k].first, error);
+    std::filesystem::rename(temporaries[k], files[k].path, error);
     if (error) {
       remove_temporaries(k);
-      throw OutputError(files[k].first.string() + ": cannot write: " + error.message());
+      throw OutputError(files[k].path.string() + ": cannot write: " + error.message());
     }
   }
 }

@@ -69,13 +69,21 @@ void write_output(const CookResult& result, const std::filesystem::path& path,
   write_outputs(result, {path}, settings);
 }
 
-std::vector<std::pair<std::filesystem::path, std::string>> output_files(
-    const CookResult& result, const std::vector<std::filesystem::path>& paths,
-    const Settings& settings, const std::vector<std::filesystem::path>& inputs) {
-  std::vector<std::pair<std::filesystem::path, std::string>> files;
+std::vector<OutputFile> output_files(const CookResult& result,
+                                     const std::vector<std::filesystem::path>& paths,
+                                     const Settings& settings,
+                                     const std::vector<std::filesystem::path>& inputs,
+                                     const BundleStream* stream) {
+  std::vector<OutputFile> files;
   for (const std::filesystem::path& path : paths) {
     check_not_an_input(path, inputs);
-    files.emplace_back(path, output_bytes(result, path, settings));
+    if (stream && output_format(path) == OutputFormat::bundle) {
+      files.push_back({path, {}, [stream, &result](std::FILE* out) {
+                         stream->write(out, result.assets, result.cooked_index);
+                       }});
+    } else {
+      files.push_back({path, output_bytes(result, path, settings)});
+    }
   }
   return files;
 }

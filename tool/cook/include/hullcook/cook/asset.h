@@ -55,6 +55,7 @@ struct CookedLevel {
 struct CookedStats {
   std::size_t traced_vertices = 0;
   std::size_t pieces = 0;
+  std::size_t hulls = 0;       // of the finest level, counted before any writer takes them
   double max_concavity = 0.0;  // [output units]
   double convexity = 1.0;      // Eq. 9 of the paper: Σ area(C) / Σ area(hull(C))
   double decompose_ms = 0.0;

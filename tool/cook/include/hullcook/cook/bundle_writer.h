@@ -3,6 +3,9 @@
 
 #include "hullcook/cook/asset.h"
 
+#include <cstdint>
+#include <cstdio>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -24,5 +27,47 @@ namespace hullcook {
 // coordinates, a hull too large for 16-bit deltas at precision E, or names so many of which share
 // their 32-bit hash that no sane name table meets the readers' probe budget (SPEC §6).
 std::string write_bundle(const std::vector<CookedAsset>& assets);
+
+// How an asset's records are laid out in a bundle.
+struct AssetShape {
+  float step = 0.0f;                       // [output units] the quantization grid's step
+  std::vector<float> level_taus;           // [output units] finest first
+  std::vector<std::uint32_t> level_hulls;  // hulls per level
+  std::uint32_t hull_count = 0, vertex_count = 0;
+};
+
+// A bundle written as a cook goes, so that a cook of 10,000 assets holds no more hulls than one
+// of 100 (issue 19): each asset's hulls are quantized and spilled to an anonymous temporary file
+// (std::tmpfile: gone with the process, however it ends) as soon as it is cooked, and write()
+// assembles the bundle from the spill. The bytes equal write_bundle's of the same assets.
+class BundleStream {
+ public:
+  // Throws OutputError when the temporary file cannot be created.
+  BundleStream();
+  ~BundleStream();
+  BundleStream(const BundleStream&) = delete;
+  BundleStream& operator=(const BundleStream&) = delete;
+
+  // Quantizes asset's levels (as write_bundle does) and spills them under key; safe to call from
+  // several threads. Throws OutputError naming the asset when it cannot be stored.
+  void add(std::size_t key, const CookedAsset& asset);
+
+  // Writes the bundle of assets, in this order, to out at its current position: the levels of
+  // assets[i] are those added under keys[i] (its other fields, the name included, are read from
+  // assets[i]). Throws OutputError (duplicate names, a failed write).
+  void write(std::FILE* out, const std::vector<CookedAsset>& assets,
+             const std::vector<std::size_t>& keys) const;
+
+ private:
+  struct Stored {
+    AssetShape shape;
+    std::size_t offset = 0;  // [bytes] in the spill: hull records, then vertex records
+    bool added = false;
+  };
+  std::FILE* spill_ = nullptr;
+  std::size_t spilled_ = 0;
+  std::vector<Stored> stored_;
+  mutable std::mutex mutex_;
+};
 
 }  // namespace hullcook

@@ -3,10 +3,12 @@
 #pragma once
 
 #include "hullcook/cook/asset.h"
+#include "hullcook/cook/output_file.h"
 
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -75,6 +77,9 @@ struct Settings {
   // needs them, the bundle and glTF writers only the levels' hulls. Without them a cook's memory
   // grows with its hulls alone (issue 19: 10,000 assets in the memory of 100).
   bool keep_outlines = true;
+  // Keep the levels' hulls in the result. A streamed output (BundleStream) takes them as each
+  // asset is cooked (cook's on_cooked), after which they may go: CookedStats keeps their count.
+  bool keep_hulls = true;
 };
 
 // Box2D 2.4's b2_linearSlop [m]: with 1 unit = 1 m, b2PolygonShape::Set welds vertices closer
@@ -82,12 +87,20 @@ struct Settings {
 inline constexpr double kDefaultWeld = 0.005;
 
 struct CookResult {
-  std::vector<CookedAsset> assets;  // in name order, whatever the order of the inputs
+  std::vector<CookedAsset> assets;        // in name order, whatever the order of the inputs
+  std::vector<std::size_t> cooked_index;  // per asset: the index on_cooked was given with it
 };
 
+// Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
+// from several threads at once, in no particular order), with the asset's index among those
+// cooked: CookResult::cooked_index maps the result's assets back to it.
+using AssetCooked = std::function<void(std::size_t index, const CookedAsset& asset)>;
+
 // Cooks images (files or directories, recursing over images) and .poly files.
-// Throws InputError naming the file and the problem; nothing is written.
-CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings);
+// Throws InputError naming the file and the problem (or whatever on_cooked throws, for the
+// first failing asset in input order); nothing is written.
+CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings,
+                const AssetCooked& on_cooked = {});
 
 // Checks before cooking what write_output would refuse about path alone: an unknown extension
 // (UsageError), a directory or a missing directory (OutputError).
@@ -105,12 +118,17 @@ std::filesystem::path physics_sidecar(const std::filesystem::path& input);
 // The files a cook read: every asset's source, and its physics sidecar where there is one.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
 
+class BundleStream;
+
 // The bytes of every output path, by extension (.hcb, .gltf, .glb, .json, or .hcf, a fragment:
-// see fragment.h), ready for write_files_atomically. Throws UsageError for an unknown extension
-// or a path that is one of inputs.
-std::vector<std::pair<std::filesystem::path, std::string>> output_files(
-    const CookResult& result, const std::vector<std::filesystem::path>& paths,
-    const Settings& settings, const std::vector<std::filesystem::path>& inputs);
+// see fragment.h), ready for write_files_atomically. With a stream (that every asset was added
+// to as cook's on_cooked, under its cooked_index), a .hcb is written from it instead of from the
+// result's hulls. Throws UsageError for an unknown extension or a path that is one of inputs.
+std::vector<OutputFile> output_files(const CookResult& result,
+                                     const std::vector<std::filesystem::path>& paths,
+                                     const Settings& settings,
+                                     const std::vector<std::filesystem::path>& inputs,
+                                     const BundleStream* stream = nullptr);
 
 // Writes the result to path, picking the writer by extension (.hcb, .gltf, .glb, .json, .hcf).
 // Writes to a temporary file and renames it; throws OutputError, or UsageError for an unknown

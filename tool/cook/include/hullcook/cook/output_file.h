@@ -1,7 +1,9 @@
 // Writing outputs without ever leaving a partial file behind, and never over an input.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,11 +18,20 @@ void check_directory_of(const std::filesystem::path& path);
 // Throws OutputError naming the file and the reason; on failure nothing is left behind.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+// One file of an output: its bytes, or, for a file too large to hold in memory (a streamed
+// bundle), a function that writes it into the open temporary file and throws OutputError when it
+// cannot.
+struct OutputFile {
+  std::filesystem::path path;
+  std::string bytes;
+  std::function<void(std::FILE* out)> write = {};  // when set, written instead of bytes
+};
+
 // Writes several files as one output: every file is written to its temporary first, and the
 // renames follow only once all are written, so a file that cannot be written leaves none of them
-// (only a rename failing after earlier ones succeeded could leave those). Throws OutputError.
-void write_files_atomically(
-    const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+// (only a rename failing after earlier ones succeeded could leave those). Throws OutputError
+// naming the file.
+void write_files_atomically(const std::vector<OutputFile>& files);
 
 // Removes the temporary files of the writes under way, from a signal handler (async-signal-safe:
 // it only unlinks the names registered when each temporary was created). A process stopped by
