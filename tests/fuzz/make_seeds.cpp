@@ -1,12 +1,14 @@
 // fuzz_make_seeds SOURCE_DIR OUT_DIR: the fuzz targets' seed corpora, made from samples/ into the
 // build tree (scripts/fuzz): OUT_DIR/poly (the small sample polygons and the core tests' data),
 // OUT_DIR/image (the small sample sprites as they are, and every sprite shrunk to at most
-// kSeedSide px a side as PNG, BMP, TGA and WebP) and OUT_DIR/bundle (bundles cooked from those
-// polygons and images, one asset each, and one with several assets, levels and physics).
+// kSeedSide px a side as PNG, BMP, TGA and WebP), OUT_DIR/bundle (bundles cooked from those
+// polygons and images, one asset each, and one with several assets, levels and physics) and
+// OUT_DIR/fragment (fragments of some of them, for link's reader).
 #include "canvas.h"  // tool/cook/src: encode_png
 #include "fuzz_limits.h"
 
 #include "hullcook/cook/cook.h"
+#include "hullcook/cook/fragment.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
@@ -199,6 +201,40 @@ void make_bundle_seeds(const std::vector<fs::path>& polys, const std::vector<fs:
   cook_bundle(pngs, out / "several_assets_levels_physics.hcb", rich);
 }
 
+// Fragments (link's input) of the same polygons and small images, and one of several assets with
+// levels and physics.
+void make_fragment_seeds(const std::vector<fs::path>& polys, const std::vector<fs::path>& images,
+                         const fs::path& out) {
+  Settings settings;
+  settings.threads = 1;
+  auto write_fragment_of = [&](const std::vector<fs::path>& inputs, const std::string& name,
+                               const Settings& with) {
+    try {
+      write_bytes(out / name, write_fragment(cook(inputs, with).assets, with));
+    } catch (const InputError&) {
+      // As for bundles: an input that cooks to nothing is no seed.
+    }
+  };
+  std::vector<fs::path> pngs;
+  for (const fs::path& image : images) {
+    if (image.extension() == ".png" && image.stem().extension() == ".small") pngs.push_back(image);
+  }
+  for (std::size_t i = 0; i < pngs.size(); i += 4) {
+    write_fragment_of({pngs[i]}, pngs[i].stem().stem().string() + ".hcf", settings);
+  }
+  for (std::size_t i = 0; i < polys.size(); i += 3) {
+    Settings relative = settings;
+    relative.tau = Tolerance::parse("2%");
+    write_fragment_of({polys[i]}, polys[i].stem().string() + ".hcf", relative);
+  }
+  Settings rich = settings;
+  rich.lods = {Tolerance::parse("4")};
+  rich.physics = PhysicsProperties{2.5f, 0.4f, 0.1f, true, 0x0002, 0x00FD};
+  rich.pixels_per_unit = 32;
+  pngs.resize(std::min<std::size_t>(pngs.size(), 3));
+  write_fragment_of(pngs, "several_assets_levels_physics.hcf", rich);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -208,11 +244,13 @@ int main(int argc, char** argv) {
   }
   const fs::path source = argv[1], out = argv[2];
   try {
-    for (const char* corpus : {"poly", "image", "bundle"}) fs::create_directories(out / corpus);
+    const char* corpora[] = {"poly", "image", "bundle", "fragment"};
+    for (const char* corpus : corpora) fs::create_directories(out / corpus);
     const std::vector<fs::path> polys = make_poly_seeds(source, out / "poly");
     const std::vector<fs::path> images = make_image_seeds(source, out / "image");
     make_bundle_seeds(polys, images, out / "bundle");
-    for (const char* corpus : {"poly", "image", "bundle"}) {
+    make_fragment_seeds(polys, images, out / "fragment");
+    for (const char* corpus : corpora) {
       const auto count = std::distance(fs::directory_iterator(out / corpus), {});
       std::printf("fuzz_make_seeds: %s: %td seeds\n", corpus, count);
     }
