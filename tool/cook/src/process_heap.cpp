@@ -14,21 +14,25 @@ namespace {
 constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 constexpr int kHugeHeap = 64 << 20;        // [bytes] of heap prepared for huge pages
 constexpr int kDefaultTopPad = 128 << 10;  // glibc's M_TOP_PAD
+constexpr std::size_t kProbeReach = std::size_t{16} << 20;  // below the mmap threshold
 
 // The heap below the first whole huge page, kept allocated (never freed, so never reused).
 void* g_below_first_huge_page = nullptr;
 
-// Grows the heap by kHugeHeap at once and marks its whole huge pages MADV_HUGEPAGE (what glibc's
-// glibc.malloc.hugetlb=1 tunable does, which a program cannot set for itself). The heap starts
-// anywhere within a huge page, and the part below the first whole one gets small pages: a block
-// over that part is kept allocated (untouched but for its header), so that the work's blocks
-// start on a huge page. Only address space is reserved: pages are allocated when touched.
+// Grows the heap by kHugeHeap (and kProbeReach) at once and marks its whole huge pages
+// MADV_HUGEPAGE (what glibc's glibc.malloc.hugetlb=1 tunable does, which a program cannot set for
+// itself). The heap starts anywhere within a huge page, and the part below the first whole one gets
+// small pages: a block over that part is kept allocated (untouched but for its header), so that the
+// work's blocks start on a huge page. Only address space is reserved: pages are allocated when
+// touched.
 void reserve_huge_heap() {
 #if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
   mallopt(M_TOP_PAD, kHugeHeap);
   // Larger than the free top of the heap (keepcost), so that the heap grows now, by the pad;
-  // freed, it joins the top again, which then starts where it started.
-  void* probe = std::malloc(mallinfo2().keepcost + (std::size_t{1} << 20));
+  // freed, it joins the top again, which then starts where it started. Growing writes a header
+  // at the probe's end, before the advice: that huge page is left to small pages, so the probe
+  // is long enough (kProbeReach) for the work to start far below it.
+  void* probe = std::malloc(mallinfo2().keepcost + kProbeReach);
   mallopt(M_TOP_PAD, kDefaultTopPad);
   if (probe == nullptr) return;
   const auto top = reinterpret_cast<std::uintptr_t>(probe);
