@@ -17,7 +17,8 @@ constexpr int kDefaultTopPad = 128 << 10;  // glibc's M_TOP_PAD
 constexpr std::size_t kProbeReach = std::size_t{16} << 20;  // below the mmap threshold
 
 // The heap below the first whole huge page, kept allocated (never freed, so never reused).
-void* g_below_first_huge_page = nullptr;
+// Volatile: the compiler would otherwise drop the allocation of a block that nothing reads.
+void* volatile g_below_first_huge_page = nullptr;
 
 // Grows the heap by kHugeHeap (and kProbeReach) at once and marks its whole huge pages
 // MADV_HUGEPAGE (what glibc's glibc.malloc.hugetlb=1 tunable does, which a program cannot set for
