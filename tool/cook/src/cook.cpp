@@ -545,7 +545,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
   std::vector<InputFile> files = collect_inputs(inputs, settings);
   // Every asset would pay its page faults again otherwise (a tenth of a cook): see there.
-  prepare_process_heap();
+  keep_freed_memory();
   CookResult result;
   result.assets.resize(files.size());
 

@@ -51,15 +51,20 @@ void reserve_huge_heap() {
 
 }  // namespace
 
-void prepare_process_heap() {
-  static std::once_flag prepared;
-  std::call_once(prepared, [] {
+void keep_freed_memory() {
+  static std::once_flag kept;
+  std::call_once(kept, [] {
 #ifdef __GLIBC__
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
-    reserve_huge_heap();
   });
+}
+
+void prepare_process_heap() {
+  keep_freed_memory();  // first: the probe below must come from the heap, not a mapping
+  static std::once_flag prepared;
+  std::call_once(prepared, reserve_huge_heap);
 }
 
 }  // namespace hullcook
