@@ -1,16 +1,23 @@
-// The decomposer's benchmark (issue 3, "Targets, in a benchmark"). One run prints:
-//  A. the issue's reference table (the ACD authors' own implementation, pieces / ms) next to ours,
-//     with the pieces ratio, the speed-up and the monkey -> monkey_2 growth;
+// The decomposer's benchmark (issues 3 and 22). One run prints:
+//  A. ours against the ACD authors' own implementation (pieces / ms, pieces ratio, speed-up):
+//     measured in the same run with `--acd2d DRIVER` (acd2d_driver, which `scripts/bench --acd2d`
+//     builds), otherwise issue 22's static figures; and the monkey -> monkey_2 growth;
 //  B. the paper's Figures 14-17 (b)-(d) for our code: pieces, time and convexity against τ for the
 //     four measures on the maze, monkey, heron and neuron models;
 //  C. Chipmunk's cpPolylineConvexDecomposition at the same τ, and CGAL's
 //     approx_convex_partition_2 against our τ = 0 (each when built with it).
-// Every time is the median CPU time of one thread over repetitions (Google Benchmark).
+//  D. with `--first-run HULLCOOK`, the first decomposition in a fresh process (the time `hullcook
+//     decompose` prints, and this program's --first-decomposition mode in CPU time) against the
+//     same work warm.
+// Every other time is the median CPU time of one thread over repetitions (Google Benchmark).
 // `--write-docs DIR` also writes DIR/plots/*.svg and the generated section of DIR/benchmarks.md.
-// `--quick` uses fewer repetitions (for trying the program out, not for figures).
+// `--quick` uses fewer repetitions and rounds (for trying the program out, not for figures).
+#include "authors_comparison.h"
+#include "bench_support.h"
+#include "first_run.h"
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/geometry.h"
-#include "hullcook/core/poly_io.h"
+#include "paper_models.h"
 
 #include <benchmark/benchmark.h>
 #include <pthread.h>
@@ -50,120 +57,17 @@ extern "C" {
 namespace {
 
 using namespace hullcook;
+using namespace hullcook::bench;
 namespace fs = std::filesystem;
 
 constexpr Measure kMeasures[] = {Measure::sl, Measure::sp, Measure::h1, Measure::h2};
 
-// The paper's models (samples/polygons/README.md). paper_radius is the paper's R (Table 2), which
-// the reference figures' "τ as a fraction of R" used. It is not the minimum enclosing circle of
-// hullcook's `--tau 1%` (the paper's R matches the largest distance from the vertex centroid,
-// which the program prints for checking).
-struct Model {
-  const char* name;
-  const char* file;          // under samples/polygons
-  double paper_radius;       // [input units] R of the paper's Table 2
-  std::vector<double> taus;  // [input units] the τ sweep of its figure (empty: no figure)
-  const char* figure;        // the paper's figure
-  const char* twin;          // the same shape with 8x the vertices (its pieces are plotted too)
-};
-
-// τ sweeps over the paper's figures' ranges, 1-2-5 steps on a log axis (0 is tabled, not plotted).
-std::vector<double> one_two_five(double from, double to) {
-  std::vector<double> taus{0.0};
-  for (double decade = from; decade <= to * 1.0001; decade *= 10)
-    for (double step : {1.0, 2.0, 5.0})
-      if (decade * step <= to * 1.0001) taus.push_back(decade * step);
-  return taus;
-}
-
-const std::vector<Model>& models() {
-  static const std::vector<Model> all = {
-      {"maze", "misc/wierd2.poly", 15.3, one_two_five(0.01, 50), "Fig. 14", nullptr},
-      {"monkey", "nazca/nazca_monkey.poly", 81.7, one_two_five(0.01, 100), "Fig. 15", "monkey_2"},
-      {"monkey_2", "nazca/nazca_monkey_2.poly", 81.7, {}, "", nullptr},
-      {"heron", "nazca/nazca_heron.poly", 137.1, one_two_five(0.01, 100), "Fig. 16", "heron_2"},
-      {"heron_2", "nazca/nazca_heron_2.poly", 137.1, {}, "", nullptr},
-      {"neuron", "neuron/neuron.poly", 19.6, one_two_five(0.001, 20), "Fig. 17", nullptr},
-  };
-  return all;
-}
-
-const Model& model_named(const std::string& name) {
-  for (const Model& model : models())
-    if (name == model.name) return model;
-  throw std::logic_error("no model " + name);
-}
-
-const std::vector<Region>& regions_of(const Model& model) {
-  static std::map<std::string, std::vector<Region>> cache;
-  auto found = cache.find(model.name);
-  if (found == cache.end()) {
-    fs::path path = fs::path(HULLCOOK_SOURCE_DIR) / "samples/polygons" / model.file;
-    found = cache.emplace(model.name, read_poly_file(path)).first;
-  }
-  return found->second;
-}
-
-// Reference figures from issue 3 ("Targets, in a benchmark"): the paper authors' own C++
-// implementation (acd2d) measured on this machine, τ = fraction × the paper's R; pieces / ms.
-struct ReferenceFigure {
-  int pieces;
-  double ms;
-};
-struct ReferenceRow {
-  const char* model;
-  double fraction;
-  ReferenceFigure sp, h1, sl;
-};
-constexpr ReferenceRow kReference[] = {
-    {"monkey", 0.01, {104, 31.4}, {104, 25.3}, {101, 0.97}},
-    {"monkey", 0.10, {30, 30.0}, {30, 25.5}, {30, 0.71}},
-    {"monkey_2", 0.01, {102, 287}, {102, 150}, {101, 5.2}},
-    {"heron", 0.01, {30, 9.8}, {30, 9.2}, {30, 0.49}},
-    {"neuron", 0.01, {160, 32.6}, {160, 20.0}, {163, 2.2}},
-};
-
-std::optional<ReferenceFigure> reference_figure(const ReferenceRow& row, Measure measure) {
-  switch (measure) {
-    case Measure::sp:
-      return row.sp;
-    case Measure::h1:
-      return row.h1;
-    case Measure::sl:
-      return row.sl;
-    case Measure::h2:
-      return std::nullopt;
-  }
-  return std::nullopt;
-}
-
-// The issue's speed targets: H1 and SP 20x faster than the reference, SL 3x.
-double target_speedup(Measure measure) { return measure == Measure::sl ? 3.0 : 20.0; }
-
 // ---------------------------------------------------------------------------------------------
-// What one decomposition of a whole model gives (sum over its regions).
-
-struct Outcome {
-  std::size_t pieces = 0;
-  double convexity = 1.0;  // Eq. 9 over all pieces
-};
-
-Outcome decompose_model(const Model& model, double tau, Measure measure) {
-  std::vector<Piece> all;
-  for (const Region& region : regions_of(model)) {
-    DecompositionTree tree = decompose(region, DecomposeSettings{tau, measure, 0.1, 1.0});
-    std::vector<Piece> pieces = tree.pieces_at(tau);
-    all.insert(all.end(), std::make_move_iterator(pieces.begin()),
-               std::make_move_iterator(pieces.end()));
-  }
-  return {all.size(), convexity(all)};
-}
-
 void time_decompose(benchmark::State& state, const Model& model, double tau, Measure measure) {
   const std::vector<Region>& regions = regions_of(model);
   for (auto _ : state) {
     for (const Region& region : regions) {
-      DecompositionTree tree = decompose(region, DecomposeSettings{tau, measure, 0.1, 1.0});
+      DecompositionTree tree = decompose(region, settings_for(tau, measure));
       benchmark::DoNotOptimize(tree.nodes().data());
     }
   }
@@ -252,12 +156,8 @@ void time_cgal(benchmark::State& state, const Model& model) {
 
 int g_table_repetitions = 15;
 int g_sweep_repetitions = 5;
-
-std::string tau_label(double tau) {
-  std::ostringstream out;
-  out << tau;
-  return out.str();
-}
+int g_paired_rounds = 15;      // tables A (with --acd2d) and D
+int g_paired_repetitions = 5;  // per side, row and round
 
 std::string table_name(const std::string& what, const Model& model, double tau) {
   return "table/" + what + "/" + model.name + "/tau=" + tau_label(tau);
@@ -291,11 +191,8 @@ constexpr double kComparisonFractions[] = {0.01, 0.10};
 const char* kHoleFreeModels[] = {"maze", "monkey", "monkey_2", "heron", "heron_2"};
 
 void register_all() {
-  for (const ReferenceRow& row : kReference) {
-    const Model& model = model_named(row.model);
-    for (Measure measure : kMeasures)
-      register_ours_table(model, row.fraction * model.paper_radius, measure);
-  }
+  for (const ComparisonRow& row : comparison_rows())
+    register_ours_table(*row.model, row.tau(), row.measure);
   for (const Model& model : models())
     for (Measure measure : kMeasures)
       for (double tau : model.taus)
@@ -343,38 +240,6 @@ std::optional<double> median_of(const MedianReporter& reporter, const std::strin
   auto found = reporter.median_ms.find(name);
   if (found == reporter.median_ms.end()) return std::nullopt;
   return found->second;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Formatting.
-
-std::string fixed(double value, int digits) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << value;
-  return out.str();
-}
-
-// Milliseconds with three significant digits.
-std::string ms_text(std::optional<double> ms) {
-  if (!ms) return "—";
-  double value = *ms;
-  int digits = value >= 100 ? 0 : value >= 10 ? 1 : value >= 1 ? 2 : value >= 0.1 ? 3 : 4;
-  return fixed(value, digits);
-}
-
-std::string ratio_text(double ratio) {
-  return fixed(ratio, ratio >= 100 ? 0 : ratio >= 10 ? 1 : 2) + "×";
-}
-
-std::string percent_text(double fraction) { return tau_label(fraction * 100) + "%"; }
-
-std::size_t vertex_count(const Model& model) {
-  std::size_t vertices = 0;
-  for (const Region& region : regions_of(model)) {
-    vertices += region.outer.size();
-    for (const Ring& hole : region.holes) vertices += hole.size();
-  }
-  return vertices;
 }
 
 // Reflex vertices: outer rings are counter-clockwise and holes clockwise, so the polygon's
@@ -559,12 +424,6 @@ Series measure_series(Measure measure) {
   return {};
 }
 
-std::string upper(const char* text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
 // ---------------------------------------------------------------------------------------------
 // The report: markdown, printed, and spliced into docs/benchmarks.md with --write-docs.
 
@@ -599,7 +458,9 @@ struct SweepPoint {
 
 class Report {
  public:
-  explicit Report(const MedianReporter& medians) : medians_(medians) {}
+  Report(const MedianReporter& medians, std::optional<PairedComparison> paired,
+         std::optional<FirstRunComparison> first_run)
+      : medians_(medians), paired_(std::move(paired)), first_run_(std::move(first_run)) {}
 
   std::string markdown() {
     std::ostringstream md;
@@ -610,9 +471,10 @@ class Report {
        << "time of one thread over " << g_table_repetitions << " repetitions (tables A, C) or "
        << g_sweep_repetitions << " (sweeps), from one run of `bench_decompose`.\n\n";
     radius_table(md);
-    reference_table(md);
+    authors_table(md);
     chipmunk_table(md);
     cgal_table(md);
+    first_run_table(md, first_run_);
     sweeps(md);
     return md.str();
   }
@@ -621,13 +483,15 @@ class Report {
 
  private:
   const MedianReporter& medians_;
+  std::optional<PairedComparison> paired_;
+  std::optional<FirstRunComparison> first_run_;
   std::map<std::string, std::string> plots_;  // file name -> SVG
 
   std::optional<double> ms(const std::string& name) const { return median_of(medians_, name); }
 
   void radius_table(std::ostream& md) {
     md << "### Models and radii\n\n"
-       << "The reference figures give τ as a fraction of the paper's R (Table 2). That R is not "
+       << "The comparisons give τ as a fraction of the paper's R (Table 2). That R is not "
           "the "
           "minimum enclosing circle radius which hullcook's `--tau 1%` uses: it matches the "
           "largest "
@@ -662,56 +526,35 @@ class Report {
     md << "\n";
   }
 
-  void reference_table(std::ostream& md) {
-    md << "### A. The issue's reference table\n\n"
-       << "Reference: the paper authors' own C++ implementation, figures from issue 3 (pieces / "
-          "ms). τ = fraction × paper's R. Pieces ratio = ours / reference (target ≤ 1.05); "
-          "speed-up = reference ms / our ms (target ≥ 20× for SP and H1, ≥ 3× for SL).\n\n"
-       << "| model | τ | measure | ref pieces | our pieces | pieces ratio | ref ms | our ms | "
-          "speed-up | targets |\n|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const ReferenceRow& row : kReference) {
-      const Model& model = model_named(row.model);
-      double tau = row.fraction * model.paper_radius;
-      for (Measure measure : {Measure::sp, Measure::h1, Measure::sl, Measure::h2}) {
-        Outcome ours = decompose_model(model, tau, measure);
-        std::optional<double> our_ms = ms(table_name(measure_name(measure), model, tau));
-        std::optional<ReferenceFigure> ref = reference_figure(row, measure);
-        md << "| " << model.name << " | " << percent_text(row.fraction) << " = " << tau_label(tau)
-           << " | " << upper(measure_name(measure)) << " | ";
-        if (ref) {
-          double pieces_ratio = static_cast<double>(ours.pieces) / ref->pieces;
-          md << ref->pieces << " | " << ours.pieces << " | " << fixed(pieces_ratio, 2) << " | "
-             << ms_text(ref->ms) << " | " << ms_text(our_ms) << " | ";
-          if (our_ms) {
-            double speedup = ref->ms / *our_ms;
-            bool met = pieces_ratio <= 1.05 && speedup >= target_speedup(measure);
-            md << ratio_text(speedup) << " | " << (met ? "met" : "**not met**");
-          } else {
-            md << "— | —";
-          }
-        } else {
-          md << "— | " << ours.pieces << " | — | — | " << ms_text(our_ms) << " | — | —";
-        }
-        md << " |\n";
-      }
-    }
+  // Table A, and how the time grows from monkey to monkey_2 (8x the vertices) on both sides.
+  void authors_table(std::ostream& md) {
+    auto our_ms = [this](const ComparisonRow& row) {
+      return ms(table_name(measure_name(row.measure), *row.model, row.tau()));
+    };
+    comparison_table(md, paired_, our_ms);
     const Model& monkey = model_named("monkey");
     const Model& monkey_2 = model_named("monkey_2");
-    md << "\nGrowth from monkey (" << vertex_count(monkey) << " vertices) to monkey_2 ("
-       << vertex_count(monkey_2)
-       << ") at τ = 1% of the paper's R, our time ratio (reference's in "
-          "brackets):";
-    for (Measure measure : {Measure::sp, Measure::h1, Measure::sl, Measure::h2}) {
-      std::optional<double> small =
-          ms(table_name(measure_name(measure), monkey, 0.01 * monkey.paper_radius));
-      std::optional<double> large =
-          ms(table_name(measure_name(measure), monkey_2, 0.01 * monkey_2.paper_radius));
-      md << " " << upper(measure_name(measure)) << " "
-         << (small && large ? ratio_text(*large / *small) : "—");
-      std::optional<ReferenceFigure> ref_small = reference_figure(kReference[0], measure);
-      std::optional<ReferenceFigure> ref_large = reference_figure(kReference[2], measure);
-      if (ref_small && ref_large) md << " (" << ratio_text(ref_large->ms / ref_small->ms) << ")";
-      md << (measure == Measure::h2 ? ".\n\n" : ",");
+    md << "Growth from monkey (" << vertex_count(monkey) << " vertices) to monkey_2 ("
+       << vertex_count(monkey_2) << ") at τ = 1% of the paper's R, our time ratio"
+       << (paired_ ? " (theirs in brackets, both from table A)" : "") << ":";
+    const std::vector<ComparisonRow>& rows = comparison_rows();
+    auto row_index = [&](const Model& model, Measure measure) {
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        if (rows[i].model == &model && rows[i].fraction == 0.01 && rows[i].measure == measure)
+          return i;
+      throw std::logic_error("no comparison row");
+    };
+    for (Measure measure : {Measure::sp, Measure::h1, Measure::sl}) {
+      const std::size_t small = row_index(monkey, measure), large = row_index(monkey_2, measure);
+      md << " " << upper(measure_name(measure)) << " ";
+      if (paired_) {
+        md << ratio_text(paired_->rows[large].our_ms / paired_->rows[small].our_ms) << " ("
+           << ratio_text(paired_->rows[large].their_ms / paired_->rows[small].their_ms) << ")";
+      } else {
+        std::optional<double> small_ms = our_ms(rows[small]), large_ms = our_ms(rows[large]);
+        md << (small_ms && large_ms ? ratio_text(*large_ms / *small_ms) : "—");
+      }
+      md << (measure == Measure::sl ? ".\n\n" : ",");
     }
   }
 
@@ -936,6 +779,8 @@ void write_docs(const fs::path& docs, const Report& report, const std::string& m
 
 struct Options {
   std::optional<fs::path> docs;
+  std::optional<fs::path> acd2d_driver;
+  std::optional<fs::path> hullcook;
   std::vector<char*> benchmark_args;
 };
 
@@ -948,7 +793,20 @@ int run(Options options) {
   MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::cout.flush();
-  Report report(reporter);
+  std::optional<PairedComparison> paired;
+  if (options.acd2d_driver) {
+    std::cerr << "bench_decompose: the authors' code and ours, " << g_paired_rounds
+              << " interleaved rounds\n";
+    paired = run_paired_comparison(*options.acd2d_driver, g_paired_rounds, g_paired_repetitions);
+  }
+  std::optional<FirstRunComparison> first_run;
+  if (options.hullcook) {
+    std::cerr << "bench_decompose: first runs of " << *options.hullcook << ", " << g_paired_rounds
+              << " rounds\n";
+    first_run = run_first_run_comparison(*options.hullcook, "/proc/self/exe", g_paired_rounds,
+                                         g_paired_repetitions);
+  }
+  Report report(reporter, std::move(paired), std::move(first_run));
   std::string markdown = report.markdown();
   std::cout << "\n" << markdown;
   if (options.docs) write_docs(*options.docs, report, markdown);
@@ -958,14 +816,28 @@ int run(Options options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 5 && std::string(argv[1]) == "--first-decomposition") {
+    try {
+      return print_first_decomposition(argv[2], argv[3], argv[4]);
+    } catch (const std::exception& error) {
+      std::cerr << "bench_decompose: " << error.what() << "\n";
+      return 1;
+    }
+  }
   Options options;
   for (int i = 0; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--write-docs" && i + 1 < argc) {
       options.docs = argv[++i];
+    } else if (arg == "--acd2d" && i + 1 < argc) {
+      options.acd2d_driver = argv[++i];
+    } else if (arg == "--first-run" && i + 1 < argc) {
+      options.hullcook = argv[++i];
     } else if (arg == "--quick") {
       g_table_repetitions = 3;
       g_sweep_repetitions = 1;
+      g_paired_rounds = 3;
+      g_paired_repetitions = 3;
     } else {
       options.benchmark_args.push_back(argv[i]);
     }

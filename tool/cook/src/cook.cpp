@@ -12,8 +12,8 @@
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
 
-#include <malloc.h>
 #include <nlohmann/json.hpp>
+#include "hullcook/cook/process_heap.h"
 
 #include <algorithm>
 #include <atomic>
@@ -554,14 +554,8 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
   std::vector<InputFile> files = collect_inputs(inputs, settings);
-  // Tracing and decomposing allocate and free buffers of megabytes; glibc would map each one
-  // afresh and give it back, so that every asset paid its page faults again (a tenth of a
-  // cook). Freed memory stays in the process for the next buffer instead.
-  static std::once_flag reuse_freed_memory;
-  std::call_once(reuse_freed_memory, [] {
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  });
+  // Every asset would pay its page faults again otherwise (a tenth of a cook): see there.
+  keep_freed_memory();
   CookResult result;
   result.assets.resize(files.size());
   result.cooked_index.resize(files.size());
