@@ -589,7 +589,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
       const std::size_t i = order[k];
       try {
         result.assets[i] = cook_one(files[i], settings, per_asset);
-        if (on_cooked) on_cooked(i, result.assets[i]);
+        if (on_cooked) on_cooked(i, files.size(), result.assets[i]);
         if (!settings.keep_hulls) {
           for (CookedLevel& level : result.assets[i].levels) std::vector<Ring>().swap(level.hulls);
         }
