@@ -173,4 +173,23 @@ TEST(Fragment, NotAFragment) {
 }
 
 }  // namespace
+// Issue 19's fuzzing of link: a fragment whose pixels per unit (5.6e-309) is positive as a double
+// but 0 as the bundle's f32 was linked into a bundle the runtime refuses, with exit 0. The reader
+// refuses it, the bundle writer too, and so does `cook --ppu` (a usage error).
+TEST(Issue19Fuzz, PixelsPerUnitBelowTheSmallestFloatIsRefused) {
+  Settings settings;
+  settings.threads = 1;
+  std::vector<CookedAsset> assets =
+      cook({kSprites / "frozen-bubble__balls__bubble-1-mini.png"}, settings).assets;
+  ASSERT_EQ(assets.size(), 1u);
+  assets[0].pixels_per_unit = 5.56268464651108e-309;
+  EXPECT_THROW(write_bundle(assets), OutputError);
+  const std::string message = refusal(write_fragment(assets, settings));
+  EXPECT_NE(message.find("sprites.hcf"), std::string::npos) << message;
+  EXPECT_NE(message.find("pixels per unit"), std::string::npos) << message;
+
+  settings.pixels_per_unit = 1e-300;
+  EXPECT_THROW(cook({kSprites / "frozen-bubble__balls__bubble-1-mini.png"}, settings), UsageError);
+}
+
 }  // namespace hullcook

@@ -192,9 +192,9 @@ void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& level
   if (asset.image_width < 0 || asset.image_width > 0xFFFF || asset.image_height < 0 ||
       asset.image_height > 0xFFFF)
     fail(asset, "image side outside [0, 65535] px");
-  if (!std::isfinite(asset.pixels_per_unit) || !(asset.pixels_per_unit > 0.0) ||
+  if (!std::isfinite(asset.pixels_per_unit) || !(static_cast<float>(asset.pixels_per_unit) > 0) ||
       !std::isfinite(static_cast<float>(asset.pixels_per_unit)))
-    fail(asset, "pixels per unit must be finite and positive");
+    fail(asset, "pixels per unit must be a positive, finite 32-bit float");
   if (!std::isfinite(static_cast<float>(asset.pivot.x)) ||
       !std::isfinite(static_cast<float>(asset.pivot.y)))
     fail(asset, "non-finite pivot");

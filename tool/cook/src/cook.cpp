@@ -530,7 +530,12 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   if (!parse_measure(settings.measure)) {
     throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
   }
-  if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
+  // Bundles store it as an f32: below the smallest one it would be stored as 0 (issue 19's
+  // fuzzing of link found such a bundle, which the runtime refuses).
+  if (!(static_cast<float>(settings.pixels_per_unit) > 0.0f) ||
+      !std::isfinite(static_cast<float>(settings.pixels_per_unit))) {
+    throw UsageError("--ppu must be positive and within the range of a 32-bit float");
+  }
   AssetSettings asset_settings(settings);
   std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings);
   // Every asset would pay its page faults again otherwise (a tenth of a cook): see there.
