@@ -2,6 +2,8 @@
 // until one is accepted, without sorting them all.
 #pragma once
 
+#include "decomposition_types.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <optional>
@@ -93,6 +95,56 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& can
     if (scores_before(candidate, *top)) top = &candidate;
   }
   if (accept(top->index)) return top->index;
+  return first_accepted_by_score(candidates, accept, quick_tests, gave_up);
+}
+
+// Eq. 8's score of a cut from `from` to vertex i of ring: (1 + sc concave(i)) / (sd |cut|).
+struct Eq8 {
+  const Ring& ring;
+  const std::vector<double>& concavity;
+  double sc, sd;
+  Vec2 from;
+  double score(std::size_t i) const {
+    return (1.0 + sc * concavity[i]) / (sd * distance(ring[i], from));
+  }
+};
+
+// The top candidate by Eq. 8 (as best_accepted_by_score finds it first) of the vertices that
+// each(visit) visits, without a square root and a division for each: most candidates of a cut lie
+// far from it, and a candidate whose squared score is below the best one's by a margin far beyond
+// rounding cannot beat it (a score is 1 / distance, scaled). A square that overflows or
+// underflows makes the test fail, and the candidate is scored. Nullopt without candidates.
+template <typename Each>
+std::optional<ScoredVertex> top_by_eq8(const Eq8& eq8, Each&& each) {
+  std::optional<ScoredVertex> top;
+  // A candidate can beat the top only where numerator² >= beaten * distance².
+  double beaten = 0.0;
+  each([&](std::size_t i) {
+    const Vec2 d = eq8.ring[i] - eq8.from;
+    const double numerator = 1.0 + eq8.sc * eq8.concavity[i];
+    if (numerator * numerator < beaten * (d.x * d.x + d.y * d.y)) return;
+    const ScoredVertex candidate{eq8.score(i), i};
+    if (!top || scores_before(candidate, *top)) {
+      top = candidate;
+      const double scaled = candidate.score * eq8.sd;
+      beaten = scaled * scaled * (1.0 - 1e-9);
+    }
+  });
+  return top;
+}
+
+// best_accepted_by_score over the Eq. 8 scores of the vertices each visits, in that order: the
+// top from top_by_eq8, and only if accept refuses it, every score (into candidates).
+template <typename Each, typename Accept>
+std::optional<std::size_t> best_accepted_by_eq8(const Eq8& eq8, Each&& each,
+                                                std::vector<ScoredVertex>& candidates,
+                                                Accept&& accept, std::size_t quick_tests = 0,
+                                                bool* gave_up = nullptr) {
+  const std::optional<ScoredVertex> top = top_by_eq8(eq8, each);
+  if (!top) return std::nullopt;
+  if (accept(top->index)) return top->index;
+  candidates.clear();
+  each([&](std::size_t i) { candidates.push_back({eq8.score(i), i}); });
   return first_accepted_by_score(candidates, accept, quick_tests, gave_up);
 }
 
