@@ -76,14 +76,14 @@ class HoleOpener {
     if (p == info_.joined && info_.closest_ring == 0 && sees(p, info_.closest)) {
       return info_.closest;
     }
-    // Nearest first: the scores are negated distances.
-    std::vector<ScoredVertex> candidates(outer_.size());
-    for (std::size_t i = 0; i < outer_.size(); ++i) {
-      candidates[i] = {-distance(outer_[i], hole_[p]), i};
-    }
+    auto each = [&](auto&& visit) {
+      for (std::size_t i = 0; i < outer_.size(); ++i) visit(i);
+    };
+    thread_local std::vector<ScoredVertex> candidates;
     bool gave_up = false;
-    const auto chosen = best_accepted_by_score(
-        candidates, [&](std::size_t i) { return sees(p, i); }, quick_tests, &gave_up);
+    const auto chosen = best_accepted(
+        Nearest{outer_, hole_[p]}, each, candidates, [&](std::size_t i) { return sees(p, i); },
+        quick_tests, &gave_up);
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
   }
 
@@ -97,7 +97,7 @@ class HoleOpener {
     };
     thread_local std::vector<ScoredVertex> candidates;
     bool gave_up = false;
-    const auto chosen = best_accepted_by_eq8(
+    const auto chosen = best_accepted(
         eq8, each, candidates,
         [&](std::size_t i) {
           return sees(q, i) && !segments_intersect(hole_[p], outer_[x], hole_[q], outer_[i]);

@@ -54,7 +54,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   RegionView view(region);
   const Vec2 a = ring[prev_index(r, n)], pr = ring[r], b = ring[next_index(r, n)];
   // The vertices that resolve r (a diagonal there splits its reflex angle), scored by Eq. 8 only
-  // as far as the search needs (see best_accepted_by_eq8).
+  // as far as the search needs (see best_accepted).
   thread_local std::vector<std::size_t> resolving;
   thread_local std::vector<ScoredVertex> scored;
   resolving.clear();
@@ -122,7 +122,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   auto each_resolving = [&](auto&& visit) {
     for (std::size_t i : resolving) visit(i);
   };
-  if (const auto chosen = best_accepted_by_eq8(eq8, each_resolving, scored, is_valid_cut)) {
+  if (const auto chosen = best_accepted(eq8, each_resolving, scored, is_valid_cut)) {
     return split_outer(region, r, *chosen, concavity, inherits_values(settings), hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -98,7 +99,12 @@ std::optional<std::size_t> best_accepted_by_score(std::vector<ScoredVertex>& can
   return first_accepted_by_score(candidates, accept, quick_tests, gave_up);
 }
 
-// Eq. 8's score of a cut from `from` to vertex i of ring: (1 + sc concave(i)) / (sd |cut|).
+// Scorers of the vertices of a ring as cut ends, which tell without a square root or a division
+// that a vertex scores below a threshold: most candidates of a cut lie far from it. A bar is the
+// threshold in the scorer's terms; below(i, bar) holds only where score(i) is surely lower (by a
+// margin far beyond rounding; a square that overflows or underflows fails the test).
+//
+// Eq. 8's score of a cut from `from` to vertex i: (1 + sc concave(i)) / (sd |cut|).
 struct Eq8 {
   const Ring& ring;
   const std::vector<double>& concavity;
@@ -107,45 +113,94 @@ struct Eq8 {
   double score(std::size_t i) const {
     return (1.0 + sc * concavity[i]) / (sd * distance(ring[i], from));
   }
+  static double no_bar() { return 0.0; }
+  // score < threshold where numerator² < (threshold sd)² |cut|².
+  double bar(double threshold) const {
+    const double scaled = threshold * sd;
+    return scaled * scaled * (1.0 - 1e-9);
+  }
+  bool below(std::size_t i, double bar) const {
+    const Vec2 d = ring[i] - from;
+    const double numerator = 1.0 + sc * concavity[i];
+    return numerator * numerator < bar * (d.x * d.x + d.y * d.y);
+  }
 };
 
-// The top candidate by Eq. 8 (as best_accepted_by_score finds it first) of the vertices that
-// each(visit) visits, without a square root and a division for each: most candidates of a cut lie
-// far from it, and a candidate whose squared score is below the best one's by a margin far beyond
-// rounding cannot beat it (a score is 1 / distance, scaled). A square that overflows or
-// underflows makes the test fail, and the candidate is scored. Nullopt without candidates.
-template <typename Each>
-std::optional<ScoredVertex> top_by_eq8(const Eq8& eq8, Each&& each) {
+// Nearest first: the score of vertex i is its negated distance from `from`.
+struct Nearest {
+  const Ring& ring;
+  Vec2 from;
+  double score(std::size_t i) const { return -distance(ring[i], from); }
+  static double no_bar() { return std::numeric_limits<double>::infinity(); }
+  // score < threshold where |cut|² exceeds the threshold's square.
+  static double bar(double threshold) {
+    const double squared = threshold * threshold;
+    return squared > 1e-280 && squared < 1e280 ? squared * (1.0 + 1e-9) : no_bar();
+  }
+  bool below(std::size_t i, double bar) const {
+    const Vec2 d = ring[i] - from;
+    return d.x * d.x + d.y * d.y > bar;
+  }
+};
+
+// The top of the vertices each(visit) visits by scores_before; nullopt without candidates.
+template <typename Scorer, typename Each>
+std::optional<ScoredVertex> top_of(const Scorer& scorer, Each&& each) {
   std::optional<ScoredVertex> top;
-  // A candidate can beat the top only where numerator² >= beaten * distance².
-  double beaten = 0.0;
+  double bar = scorer.no_bar();
   each([&](std::size_t i) {
-    const Vec2 d = eq8.ring[i] - eq8.from;
-    const double numerator = 1.0 + eq8.sc * eq8.concavity[i];
-    if (numerator * numerator < beaten * (d.x * d.x + d.y * d.y)) return;
-    const ScoredVertex candidate{eq8.score(i), i};
+    if (scorer.below(i, bar)) return;
+    const ScoredVertex candidate{scorer.score(i), i};
     if (!top || scores_before(candidate, *top)) {
       top = candidate;
-      const double scaled = candidate.score * eq8.sd;
-      beaten = scaled * scaled * (1.0 - 1e-9);
+      bar = scorer.bar(candidate.score);
     }
   });
   return top;
 }
 
-// best_accepted_by_score over the Eq. 8 scores of the vertices each visits, in that order: the
-// top from top_by_eq8, and only if accept refuses it, every score (into candidates).
-template <typename Each, typename Accept>
-std::optional<std::size_t> best_accepted_by_eq8(const Eq8& eq8, Each&& each,
-                                                std::vector<ScoredVertex>& candidates,
-                                                Accept&& accept, std::size_t quick_tests = 0,
-                                                bool* gave_up = nullptr) {
-  const std::optional<ScoredVertex> top = top_by_eq8(eq8, each);
+// The best `count` of the vertices each visits, in order, into best; returns how many it visited.
+template <typename Scorer, typename Each>
+std::size_t best_few_of(const Scorer& scorer, Each&& each, std::size_t count,
+                        std::vector<ScoredVertex>& best) {
+  best.clear();
+  std::size_t visited = 0;
+  double bar = scorer.no_bar();
+  each([&](std::size_t i) {
+    ++visited;
+    if (best.size() == count && scorer.below(i, bar)) return;
+    const ScoredVertex candidate{scorer.score(i), i};
+    if (best.size() == count && !scores_before(candidate, best.back())) return;
+    best.insert(std::upper_bound(best.begin(), best.end(), candidate, scores_before), candidate);
+    if (best.size() > count) best.pop_back();
+    if (best.size() == count) bar = scorer.bar(best.back().score);
+  });
+  return visited;
+}
+
+// best_accepted_by_score over the scores of the vertices each visits, in that order, scoring
+// only what the search needs: a quick search its best few, a full one its top, and every score
+// (into candidates) only if accept refuses the top.
+template <typename Scorer, typename Each, typename Accept>
+std::optional<std::size_t> best_accepted(const Scorer& scorer, Each&& each,
+                                         std::vector<ScoredVertex>& candidates, Accept&& accept,
+                                         std::size_t quick_tests = 0, bool* gave_up = nullptr) {
+  if (quick_tests > 0) {
+    // What first_accepted_by_score's quick search tests, in its order.
+    thread_local std::vector<ScoredVertex> best_few;
+    const std::size_t visited = best_few_of(scorer, each, quick_tests, best_few);
+    for (const ScoredVertex& candidate : best_few) {
+      if (accept(candidate.index)) return candidate.index;
+    }
+    if (best_few.size() < visited && gave_up) *gave_up = true;
+    return std::nullopt;
+  }
+  const std::optional<ScoredVertex> top = top_of(scorer, each);
   if (!top) return std::nullopt;
   if (accept(top->index)) return top->index;
   candidates.clear();
-  each([&](std::size_t i) { candidates.push_back({eq8.score(i), i}); });
-  return first_accepted_by_score(candidates, accept, quick_tests, gave_up);
+  each([&](std::size_t i) { candidates.push_back({scorer.score(i), i}); });
+  return first_accepted_by_score(candidates, accept, 0, gave_up);
 }
 
 }  // namespace hullcook::detail
