@@ -323,5 +323,27 @@ TEST_F(CookCli, Issue19FuzzSpikeThinnerThanTheContractAllowsIsBadInput) {
   expect_bad_input(write("spike.poly", text), "region 1 is too thin");
 }
 
+// Issue 19's fuzzing: a hole vertex 1.2e-9 above the bottom edge of a 0.756 wide rectangle, a
+// wall thinner than twice its sliver width (see tests/cook/thin_wall_test.cpp): bad input, both
+// for decompose and for cook.
+TEST_F(CookCli, Issue19FuzzHoleAHairFromTheOuterEdgeIsBadInput) {
+  const std::string text =
+      "2\n4 out\n0 0\n0.756 0\n0.756 0.152\n0 0.152\n1 2 3 4\n6 in\n0.7055 "
+      "0.033198729810778066\n0.6555 .000000001177075663\n0.6305 0.0765\n0.6555 "
+      "0.11980127018922193\n0.7055 0.11980127018922193\n0.7305 0.0765\n1 2 3 4 5 6\n";
+  const fs::path input = write("hair.poly", text);
+  const fs::path json = directory / "pieces.json";
+  auto result = run_hullcook("decompose " + input.string() + " --tau 1% --json " + json.string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find(input.string() +
+                               ": region 1 is too thin to cut into pieces within the output's "
+                               "contract (hole 1 comes within 1.17708e-09 of the outer boundary"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+  EXPECT_FALSE(fs::exists(json));
+  expect_bad_input(input, "hole 1 comes within");
+}
+
 }  // namespace
 }  // namespace hullcook

