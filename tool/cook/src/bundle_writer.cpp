@@ -361,6 +361,7 @@ BundleHeader assemble(const std::vector<CookedAsset>& assets, const RecordSource
 
   std::uint32_t crc = 0;
   auto put_bytes = [&](const void* data, std::size_t size) {
+    if (size == 0) return;  // an empty vector's data() may be null
     crc = format::crc32(crc, data, size);
     append(data, size);
   };
@@ -430,6 +431,14 @@ BundleHeader assemble(const std::vector<CookedAsset>& assets, const RecordSource
   return header;
 }
 
+// fwrite and fread of size bytes; an empty vector's data() may be null, which they must not get.
+bool write_all(std::FILE* file, const void* data, std::size_t size) {
+  return size == 0 || std::fwrite(data, 1, size, file) == size;
+}
+bool read_all(std::FILE* file, void* data, std::size_t size) {
+  return size == 0 || std::fread(data, 1, size, file) == size;
+}
+
 [[noreturn]] void spill_failed(const char* what) {
   throw OutputError(std::string("bundle: cannot ") + what +
                     " the temporary file of a streamed bundle: " + std::strerror(errno));
@@ -468,8 +477,8 @@ void BundleStream::add(std::size_t key, const CookedAsset& asset) {
   stored.offset = spilled_;
   const std::size_t hull_bytes = records.hulls.size() * sizeof(HullRecord);
   const std::size_t vertex_bytes = records.vertices.size() * sizeof(VertexRecord);
-  if (std::fwrite(records.hulls.data(), 1, hull_bytes, spill_) != hull_bytes ||
-      std::fwrite(records.vertices.data(), 1, vertex_bytes, spill_) != vertex_bytes) {
+  if (!write_all(spill_, records.hulls.data(), hull_bytes) ||
+      !write_all(spill_, records.vertices.data(), vertex_bytes)) {
     spill_failed("write");
   }
   spilled_ += hull_bytes + vertex_bytes;
@@ -493,8 +502,8 @@ void BundleStream::write(std::FILE* out, const std::vector<CookedAsset>& assets,
       const std::size_t vertex_bytes = vertices.size() * sizeof(VertexRecord);
       if (std::fflush(stream_.spill_) != 0 ||
           std::fseek(stream_.spill_, static_cast<long>(at.offset), SEEK_SET) != 0 ||
-          std::fread(hulls.data(), 1, hull_bytes, stream_.spill_) != hull_bytes ||
-          std::fread(vertices.data(), 1, vertex_bytes, stream_.spill_) != vertex_bytes) {
+          !read_all(stream_.spill_, hulls.data(), hull_bytes) ||
+          !read_all(stream_.spill_, vertices.data(), vertex_bytes)) {
         spill_failed("read");
       }
     }
@@ -515,7 +524,7 @@ void BundleStream::write(std::FILE* out, const std::vector<CookedAsset>& assets,
   const long start = std::ftell(out);
   const BundleHeader header =
       assemble(assets, Spilled(*this, keys), [&](const void* data, std::size_t n) {
-        if (std::fwrite(data, 1, n, out) != n) throw OutputError(std::strerror(errno));
+        if (!write_all(out, data, n)) throw OutputError(std::strerror(errno));
       });
   if (std::fseek(out, start, SEEK_SET) != 0 ||
       std::fwrite(&header, 1, sizeof header, out) != sizeof header) {
