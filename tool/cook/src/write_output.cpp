@@ -61,6 +61,7 @@ std::vector<std::filesystem::path> files_read(const CookResult& result) {
     std::error_code error;
     if (std::filesystem::exists(sidecar, error)) files.push_back(sidecar);
   }
+  files.insert(files.end(), result.sheet_images.begin(), result.sheet_images.end());
   return files;
 }
 
