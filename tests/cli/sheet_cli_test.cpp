@@ -280,6 +280,18 @@ TEST_F(SheetCli, NameDepfileAndSidecarFollowTheSheet) {
   }
 }
 
+TEST_F(SheetCli, ASheetsFragmentLinksToTheBytesOfOneCook) {
+  const std::string sheet = (directory / "hash.json").string();
+  auto one = run_hullcook("cook " + sheet + " -q -o " + (directory / "one.hcb").string());
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  auto fragment = run_hullcook("cook " + sheet + " -q -o " + (directory / "hash.hcf").string());
+  ASSERT_EQ(fragment.exit_code, 0) << fragment.output;
+  auto linked = run_hullcook("link " + (directory / "hash.hcf").string() + " -q -o " +
+                             (directory / "linked.hcb").string());
+  ASSERT_EQ(linked.exit_code, 0) << linked.output;
+  EXPECT_EQ(read_bytes(directory / "linked.hcb"), read_bytes(directory / "one.hcb"));
+}
+
 TEST_F(SheetCli, DirectoriesAreSearchedForImagesOnly) {
   const auto assets = cook(directory.string());
   EXPECT_EQ(assets.size(), 1u);
