@@ -263,6 +263,7 @@ TEST_F(SheetCli, AsepriteSlicePivotsGoToTheirFramesInTheFilesOrder) {
 
 TEST_F(SheetCli, NameDepfileAndSidecarFollowTheSheet) {
   write("hash.physics.json", R"({"density": 3})");
+  write("hash.hullcook.json", R"({"tau": 7})");
   const fs::path out = directory / "out.hcb", depfile = directory / "out.d";
   auto result = run_hullcook("cook " + (directory / "hash.json").string() +
                              " --name chars/hero -q -o " + out.string() + " --json " +
@@ -273,9 +274,10 @@ TEST_F(SheetCli, NameDepfileAndSidecarFollowTheSheet) {
   for (const json& asset : assets) {
     EXPECT_EQ(asset["name"].get<std::string>().rfind("chars/hero/", 0), 0u) << asset["name"];
     EXPECT_EQ(asset["physics"]["density"], 3.0);
+    EXPECT_EQ(asset["tau"], 7.0);
   }
   const std::string d = read_bytes(depfile);
-  for (const char* read : {"hash.json", "atlas.png", "hash.physics.json"}) {
+  for (const char* read : {"hash.json", "atlas.png", "hash.physics.json", "hash.hullcook.json"}) {
     EXPECT_NE(d.find((directory / read).string()), std::string::npos) << read << "\n" << d;
   }
 }

@@ -215,9 +215,10 @@ TEST(Cook, Issue19_StreamedBundleKeepsNoHullsAndGivesTheSameBytes) {
   streamed.keep_outlines = false;
   BundleStream stream;
   const CookResult first = cook({kSprites}, whole);
-  const CookResult second =
-      cook({kSprites}, streamed,
-           [&stream](std::size_t index, const CookedAsset& asset) { stream.add(index, asset); });
+  const CookResult second = cook(
+      {kSprites}, streamed, [&stream](std::size_t index, std::size_t, const CookedAsset& asset) {
+        stream.add(index, asset);
+      });
   ASSERT_EQ(first.assets.size(), second.assets.size());
   std::size_t hulls = 0;
   for (std::size_t i = 0; i < second.assets.size(); ++i) {

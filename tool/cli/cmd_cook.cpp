@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "cook_options.h"
 #include "outputs.h"
+#include "progress.h"
 
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
@@ -105,7 +106,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
                 "gltfpack does)")
       ->excludes(draco);
   app->add_flag("-q,--quiet", command->quiet,
-                "Print no per-asset table (warnings still go to stderr)");
+                "Print no progress bar and no per-asset table (warnings still go to stderr)");
   add_cook_options(*app, command->settings, command->options);
   app->callback([command, app, &action] {
     action = [command, app] {
@@ -127,7 +128,6 @@ void add_cook(CLI::App& root, CommandAction& action) {
       // A bundle is written as the cook goes (issue 19: the memory of 10,000 assets is that of
       // 100); the hulls stay in memory only when another output needs them.
       std::unique_ptr<BundleStream> stream;
-      AssetCooked on_cooked;
       bool hulls_needed = !command->report.empty();
       for (const std::filesystem::path& output : outputs) {
         if (output.extension() != ".hcb")
@@ -135,12 +135,13 @@ void add_cook(CLI::App& root, CommandAction& action) {
         else if (!stream)
           stream = std::make_unique<BundleStream>();
       }
-      if (stream) {
-        on_cooked = [&stream](std::size_t index, const CookedAsset& asset) {
-          stream->add(index, asset);
-        };
-      }
       command->settings.keep_hulls = hulls_needed || !stream;
+      ProgressBar progress(!command->quiet && ProgressBar::stdout_is_terminal());
+      const AssetCooked on_cooked = [&stream, &progress](std::size_t index, std::size_t count,
+                                                         const CookedAsset& asset) {
+        if (stream) stream->add(index, asset);
+        progress.advance(count);
+      };
       CookResult result = cook(inputs, command->settings, on_cooked);
       if (!command->name.empty()) rename_assets(result, command->name);
       auto files =
@@ -151,6 +152,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
       }
       if (!command->report.empty()) files.push_back({command->report, cook_report(result, true)});
       write_files_atomically(files);
+      progress.finish();
       if (!command->quiet) print_summary(result);
       print_warnings(result);
       return 0;

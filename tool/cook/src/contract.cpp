@@ -364,13 +364,15 @@ std::vector<std::size_t> hull_vertices_in_ring(const Ring& hull, const Ring& rin
 // A stretch of boundary, from before to, lexicographically, run weight times that way.
 struct Stretch {
   Vec2 from, to;
-  int weight;
-  std::size_t ring;  // where it came from (see RingOf)
+  std::int32_t weight;
+  std::uint32_t ring;  // where it came from (see RingOf); 32 bits: on a sheet of thousands of
+                       // blobs the stretches are a cook's largest buffer (issue 17)
 };
 
 bool lexicographically_less(Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
-void add_stretch(Vec2 a, Vec2 b, int weight, std::size_t ring, std::vector<Stretch>& stretches) {
+void add_stretch(Vec2 a, Vec2 b, std::int32_t weight, std::uint32_t ring,
+                 std::vector<Stretch>& stretches) {
   if (a == b) return;
   if (lexicographically_less(a, b)) {
     stretches.push_back({a, b, weight, ring});
@@ -411,9 +413,9 @@ void cancel_by_hash(std::vector<Stretch>& stretches) {
   };
   std::size_t capacity = 16;
   while (capacity < 2 * stretches.size()) capacity *= 2;
-  constexpr std::size_t kEmpty = std::numeric_limits<std::size_t>::max();
-  std::vector<std::size_t> slots(capacity, kEmpty);
-  std::size_t kept = 0;
+  constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> slots(capacity, kEmpty);
+  std::uint32_t kept = 0;
   for (std::size_t i = 0; i < stretches.size(); ++i) {
     const Stretch stretch = stretches[i];
     const std::uint64_t hash =
@@ -501,7 +503,8 @@ std::optional<std::string> partition_defect(const std::vector<CookedPiece>& piec
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r].ring;
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      add_stretch(ring[i], ring[(i + 1) % n], rings[r].weight, r, stretches);
+      add_stretch(ring[i], ring[(i + 1) % n], rings[r].weight, static_cast<std::uint32_t>(r),
+                  stretches);
     }
   }
   cancel_by_hash(stretches);

@@ -2,6 +2,7 @@
 // engine limits.
 #include "hullcook/cook/cook.h"
 
+#include "asset_settings.h"
 #include "grid.h"
 #include "hullcook/cook/constrain.h"
 #include "hullcook/cook/contract.h"
@@ -62,13 +63,16 @@ TraceSettings trace_settings(const Settings& settings, double simplify_px);
 // A sheet JSON's frames, each named SHEET/FRAME (SHEET: the file's name without .json). The atlas
 // is decoded here, once; its errors name the JSON, which named it.
 void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path& path,
-                      const std::string& name, const Settings& settings) {
+                      const std::string& name, const Settings& settings,
+                      AssetSettings& asset_settings) {
   auto sheet = std::make_shared<const Sheet>(read_sheet(path, settings.max_pixels));
   const auto start = Clock::now();
+  // With the sheet's own alpha (its sidecar or project rule), as a grid's sheet.
+  const std::shared_ptr<const Settings> own = asset_settings.for_input(path);
   std::shared_ptr<const AlphaImage> atlas;
   try {
-    atlas =
-        std::make_shared<const AlphaImage>(load_alpha(sheet->image, trace_settings(settings, 0)));
+    atlas = std::make_shared<const AlphaImage>(
+        load_alpha(sheet->image, trace_settings(own ? *own : settings, 0)));
   } catch (const InputError& e) {
     throw InputError(path.string() + ": meta.image: " + e.what());
   }
@@ -89,9 +93,10 @@ void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path
 // Adds an input file; with --grid an image adds its cells instead, named NAME/INDEX (Tiled's
 // row-major tile number), sorted by name as link sorts assets. The sheet is decoded here, once.
 void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
-                    const std::string& name, const Settings& settings) {
+                    const std::string& name, const Settings& settings,
+                    AssetSettings& asset_settings) {
   if (is_sheet_file(path)) {
-    add_sheet_frames(files, path, name, settings);
+    add_sheet_frames(files, path, name, settings, asset_settings);
     return;
   }
   if (!settings.grid || is_poly_file(path)) {
@@ -99,7 +104,10 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
     return;
   }
   const auto start = Clock::now();
-  auto sheet = std::make_shared<const AlphaImage>(load_alpha(path, trace_settings(settings, 0)));
+  // Decoded once for its cells: with the sheet's own alpha (its sidecar or project rule).
+  const std::shared_ptr<const Settings> own = asset_settings.for_input(path);
+  auto sheet = std::make_shared<const AlphaImage>(
+      load_alpha(path, trace_settings(own ? *own : settings, 0)));
   const double decode_ms = milliseconds_since(start);
   const Grid& grid = *settings.grid;
   const std::vector<GridCell> cells = grid_cells(sheet->width, sheet->height, grid);
@@ -120,7 +128,7 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
 
 // Expands directories (recursively) into image files; files are taken as given. In name order.
 std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs,
-                                      const Settings& settings) {
+                                      const Settings& settings, AssetSettings& asset_settings) {
   std::vector<InputFile> files;
   for (const std::filesystem::path& input : inputs) {
     std::error_code error;
@@ -132,7 +140,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         std::error_code entry_error;
         if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
           add_input_file(found, it->path(), it->path().lexically_relative(input).generic_string(),
-                         settings);
+                         settings, asset_settings);
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
@@ -148,7 +156,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       files.insert(files.end(), std::make_move_iterator(found.begin()),
                    std::make_move_iterator(found.end()));
     } else if (std::filesystem::is_regular_file(input, error)) {
-      add_input_file(files, input, input.filename().generic_string(), settings);
+      add_input_file(files, input, input.filename().generic_string(), settings, asset_settings);
     } else {
       throw InputError(input.string() + ": no such file or directory");
     }
@@ -369,38 +377,7 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
   if (json.is_discarded() || !json.is_object()) {
     throw InputError(sidecar.string() + ": not a JSON object of physics properties");
   }
-  for (const auto& [key, value] : json.items()) {
-    auto number = [&, &key = key, &value = value]() {
-      if (!value.is_number() || !(value.get<double>() >= 0.0) ||
-          !(value.get<double>() <= kMaxPhysicsValue)) {
-        throw InputError(sidecar.string() + ": '" + key +
-                         "' must be a finite non-negative number (an f32)");
-      }
-      return value.get<double>();
-    };
-    auto bits = [&, &key = key, &value = value]() {
-      if (!value.is_number_unsigned() || value.get<std::uint64_t>() > 0xFFFF) {
-        throw InputError(sidecar.string() + ": '" + key + "' must be an integer in 0..65535");
-      }
-      return static_cast<std::uint16_t>(value.get<std::uint64_t>());
-    };
-    if (key == "density") {
-      physics.density = static_cast<float>(number());
-    } else if (key == "friction") {
-      physics.friction = static_cast<float>(number());
-    } else if (key == "restitution") {
-      physics.restitution = static_cast<float>(number());
-    } else if (key == "sensor" && value.is_boolean()) {
-      physics.sensor = value.get<bool>();
-    } else if (key == "category") {
-      physics.category_bits = bits();
-    } else if (key == "mask") {
-      physics.mask_bits = bits();
-    } else {
-      throw InputError(sidecar.string() + ": unknown or mistyped property '" + key +
-                       "' (density, friction, restitution, sensor, category, mask)");
-    }
-  }
+  apply_physics_json(physics, json, sidecar.string());
   return physics;
 }
 
@@ -427,8 +404,12 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
 
 // threads: how many may work on this one asset (its regions), when there are fewer
 // assets than threads.
-CookedAsset cook_one(const InputFile& file, const Settings& settings, unsigned threads) {
+CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings& asset_settings,
+                     unsigned threads) {
   auto start = Clock::now();
+  // A project file's rules and the image's sidecar may change its settings (asset_settings.h).
+  const std::shared_ptr<const Settings> own = asset_settings.for_input(file.path);
+  const Settings& settings = own ? *own : given;
   PreparedInput input =
       is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
   CookedAsset asset;
@@ -598,7 +579,8 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
   }
   if (!(settings.pixels_per_unit > 0)) throw UsageError("--ppu must be positive");
-  std::vector<InputFile> files = collect_inputs(inputs, settings);
+  AssetSettings asset_settings(settings);
+  std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings);
   CookResult result;
   for (const InputFile& file : files) {
     if (file.frames &&
@@ -639,8 +621,8 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     for (std::size_t k = next++; k < files.size(); k = next++) {
       const std::size_t i = order[k];
       try {
-        result.assets[i] = cook_one(files[i], settings, per_asset);
-        if (on_cooked) on_cooked(i, result.assets[i]);
+        result.assets[i] = cook_one(files[i], settings, asset_settings, per_asset);
+        if (on_cooked) on_cooked(i, files.size(), result.assets[i]);
         if (!settings.keep_hulls) {
           for (CookedLevel& level : result.assets[i].levels) std::vector<Ring>().swap(level.hulls);
         }

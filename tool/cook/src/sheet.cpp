@@ -175,9 +175,11 @@ std::string without_image_extension(const std::string& name) {
 
 bool is_sheet_file(const std::filesystem::path& path) {
   const std::string name = path.filename().string();
-  const std::string sidecar = ".physics.json";
-  if (name.size() >= sidecar.size() &&
-      name.compare(name.size() - sidecar.size(), sidecar.size(), sidecar) == 0) {
+  auto ends_with = [&name](const std::string& end) {
+    return name.size() >= end.size() &&
+           name.compare(name.size() - end.size(), end.size(), end) == 0;
+  };
+  if (ends_with(".physics.json") || ends_with(".hullcook.json") || name == "hullcook.json") {
     return false;
   }
   return path.extension() == ".json";

@@ -31,7 +31,8 @@ struct Sheet {
   std::vector<SheetFrame> frames;  // in the file's order
 };
 
-// A JSON file named as an input is a sheet; a physics sidecar (NAME.physics.json) is not.
+// A JSON file named as an input is a sheet; a sidecar (NAME.physics.json, NAME.hullcook.json) or
+// a project file (hullcook.json) is not.
 bool is_sheet_file(const std::filesystem::path& path);
 
 // Reads and checks a sheet's JSON (not its atlas): throws InputError naming path and the problem.

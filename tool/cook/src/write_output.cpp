@@ -1,3 +1,4 @@
+#include "asset_settings.h"
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/debug_json.h"
@@ -6,6 +7,8 @@
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
+#include <set>
+#include <string>
 #include <system_error>
 
 namespace hullcook {
@@ -55,11 +58,18 @@ void check_output_path(const std::filesystem::path& path) {
 
 std::vector<std::filesystem::path> files_read(const CookResult& result) {
   std::vector<std::filesystem::path> files;
+  AssetSettings settings_files;
+  std::set<std::string> seen;
   for (const CookedAsset& asset : result.assets) {
+    // A sheet's cells share their source and its settings files.
+    if (!seen.insert(asset.source).second) continue;
     files.emplace_back(asset.source);
     const std::filesystem::path sidecar = physics_sidecar(asset.source);
     std::error_code error;
     if (std::filesystem::exists(sidecar, error)) files.push_back(sidecar);
+    for (std::filesystem::path& file : settings_files.files_for(asset.source)) {
+      files.push_back(std::move(file));
+    }
   }
   files.insert(files.end(), result.sheet_images.begin(), result.sheet_images.end());
   return files;

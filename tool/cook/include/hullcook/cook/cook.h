@@ -93,9 +93,10 @@ struct CookResult {
 };
 
 // Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
-// from several threads at once, in no particular order), with the asset's index among those
+// from several threads at once, in no particular order), with the asset's index among the count
 // cooked: CookResult::cooked_index maps the result's assets back to it.
-using AssetCooked = std::function<void(std::size_t index, const CookedAsset& asset)>;
+using AssetCooked =
+    std::function<void(std::size_t index, std::size_t count, const CookedAsset& asset)>;
 
 // Cooks images (files or directories, recursing over images), .poly files and sprite sheets
 // (TexturePacker or Aseprite JSON named as inputs, each frame an asset SHEET/FRAME).

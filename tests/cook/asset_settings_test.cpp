@@ -1,0 +1,162 @@
+// Issue 18: per-asset settings without a GUI. A project file hullcook.json maps globs to settings,
+// a sidecar NAME.hullcook.json sets one image's; each asset cooks as if its settings had been
+// given on the command line for it alone, whether its folder or the image itself is cooked, and
+// both files are dependencies of the output.
+#include "asset_settings.h"  // tool/cook/src
+
+#include "hullcook/cook/cook.h"
+#include "hullcook/core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace hullcook {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Glob, StarsStayInAFolderDoubleStarsCrossThem) {
+  EXPECT_TRUE(glob_matches("*.png", "hero.png"));
+  EXPECT_FALSE(glob_matches("*.png", "tiles/grass.png"));
+  EXPECT_TRUE(glob_matches("tiles/*.png", "tiles/grass.png"));
+  EXPECT_TRUE(glob_matches("**/*.png", "hero.png"));
+  EXPECT_TRUE(glob_matches("**/*.png", "a/b/c/hero.png"));
+  EXPECT_TRUE(glob_matches("a/**", "a/b/c.png"));
+  EXPECT_FALSE(glob_matches("a/**", "b/a/c.png"));
+  EXPECT_TRUE(glob_matches("h?ro.png", "hero.png"));
+  EXPECT_FALSE(glob_matches("h?ro.png", "heero.png"));
+  EXPECT_TRUE(glob_matches("**/enemies/bat*", "world/enemies/bat_2.png"));
+  EXPECT_FALSE(glob_matches("tiles/*", "tiles"));
+}
+
+class ProjectSettings : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::temp_directory_path() /
+           ("hullcook_asset_settings_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(root);
+    fs::create_directories(root / "art/tiles");
+    fs::create_directories(root / "art/enemies");
+    const fs::path sprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+    fs::copy_file(sprites / "teeworlds__mapres__grass_main.png", root / "art/tiles/grass.png");
+    fs::copy_file(sprites / "pingus__groundpieces__ground__foliage__oak1.png",
+                  root / "art/enemies/bat.png");
+    fs::copy_file(sprites / "pingus__groundpieces__ground__foliage__oak1.png",
+                  root / "art/hero.png");
+    write(root / "art/hullcook.json",
+          R"({"assets": [{"match": "tiles/*.png", "tau": 8, "max_verts": 4},
+                         {"match": "**/hero.png", "physics": {"density": 3}}]})");
+    write(root / "art/enemies/bat.hullcook.json", R"({"alpha": 200, "lods": ["16"]})");
+  }
+  void TearDown() override { fs::remove_all(root); }
+
+  static void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+  static const CookedAsset& named(const CookResult& result, const std::string& name) {
+    for (const CookedAsset& asset : result.assets) {
+      if (asset.name == name) return asset;
+    }
+    throw std::runtime_error("no asset " + name);
+  }
+
+  static void expect_same_levels(const CookedAsset& a, const CookedAsset& b) {
+    ASSERT_EQ(a.levels.size(), b.levels.size()) << a.name;
+    for (std::size_t l = 0; l < a.levels.size(); ++l) {
+      EXPECT_EQ(a.levels[l].tau, b.levels[l].tau) << a.name;
+      EXPECT_EQ(a.levels[l].hulls, b.levels[l].hulls) << a.name << " level " << l;
+    }
+  }
+
+  fs::path root;
+};
+
+TEST_F(ProjectSettings, Issue18_EachAssetCooksAsWithItsSettingsOnTheCommandLine) {
+  Settings settings;
+  settings.threads = 2;
+  const CookResult folder = cook({root / "art"}, settings);
+  ASSERT_EQ(folder.assets.size(), 3u);
+
+  Settings tiles = settings;
+  tiles.tau = Tolerance{8.0, false};
+  tiles.max_verts = 4;
+  const CookResult tile_alone = cook({root / "art/tiles/grass.png"}, tiles);
+  const CookedAsset& grass = named(folder, "tiles/grass.png");
+  expect_same_levels(grass, tile_alone.assets.at(0));
+  for (const Ring& hull : grass.levels.at(0).hulls) EXPECT_LE(hull.size(), 4u);
+
+  Settings bat = settings;
+  bat.alpha = 200;
+  bat.lods = {Tolerance{16.0, false}};
+  expect_same_levels(named(folder, "enemies/bat.png"),
+                     cook({root / "art/enemies/bat.png"}, bat).assets.at(0));
+  EXPECT_EQ(named(folder, "enemies/bat.png").levels.size(), 2u);
+
+  const CookedAsset& hero = named(folder, "hero.png");
+  ASSERT_TRUE(hero.physics.has_value());
+  EXPECT_EQ(hero.physics->density, 3.0f);
+  EXPECT_FALSE(named(folder, "enemies/bat.png").physics.has_value());
+  expect_same_levels(hero, cook({root / "art/hero.png"}, settings).assets.at(0));
+}
+
+// Cooked alone (as a fragment build cooks each image), an image finds the nearest project file up
+// from it and gets the settings it gets when its folder is cooked.
+TEST_F(ProjectSettings, Issue18_AnImageCookedAloneGetsItsFolderCooksSettings) {
+  Settings settings;
+  settings.threads = 1;
+  const CookResult folder = cook({root / "art"}, settings);
+  expect_same_levels(named(folder, "tiles/grass.png"),
+                     cook({root / "art/tiles/grass.png"}, settings).assets.at(0));
+  expect_same_levels(named(folder, "enemies/bat.png"),
+                     cook({root / "art/enemies/bat.png"}, settings).assets.at(0));
+}
+
+TEST_F(ProjectSettings, Issue18_TheSettingsFilesAreDependencies) {
+  Settings settings;
+  settings.threads = 1;
+  const std::vector<fs::path> read = files_read(cook({root / "art"}, settings));
+  auto has = [&](const fs::path& path) {
+    for (const fs::path& file : read) {
+      if (fs::equivalent(file, path)) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(has(root / "art/hullcook.json"));
+  EXPECT_TRUE(has(root / "art/enemies/bat.hullcook.json"));
+  EXPECT_TRUE(has(root / "art/tiles/grass.png"));
+}
+
+TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
+  Settings settings;
+  settings.threads = 1;
+  auto expect_refused = [&](const fs::path& file, const std::string& text,
+                            const std::string& problem) {
+    write(file, text);
+    try {
+      cook({root / "art"}, settings);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+    }
+  };
+  const fs::path project = root / "art/hullcook.json", sidecar = root / "art/hero.hullcook.json";
+  expect_refused(project, "{\"assets\": [", "not a JSON object");
+  expect_refused(project, R"({"asset": []})", "unknown key 'asset'");
+  expect_refused(project, R"({"assets": [{"tau": 2}]})", "needs a \"match\" glob");
+  expect_refused(project, R"({"assets": [{"match": "*", "alpha": 300}]})", "'alpha'");
+  write(project, R"({"assets": []})");
+  expect_refused(sidecar, R"({"tau": "fast"})", "'tau'");
+  expect_refused(sidecar, R"({"max_verts": 2})", "'max_verts'");
+  expect_refused(sidecar, R"({"measure": "l2"})", "'measure'");
+  expect_refused(sidecar, R"({"physics": {"density": -1}})", "'density'");
+  expect_refused(sidecar, R"({"simplify": 1})", "unknown setting 'simplify'");
+  write(sidecar, R"({"lods": ["2%"]})");
+  EXPECT_THROW(cook({root / "art"}, settings), InputError);
+}
+
+}  // namespace
+}  // namespace hullcook

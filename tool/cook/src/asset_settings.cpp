@@ -1,0 +1,244 @@
+#include "asset_settings.h"
+
+#include "hullcook/core/decompose.h"
+#include "hullcook/core/error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace hullcook {
+namespace {
+
+using json = nlohmann::json;
+
+json read_json_object(const std::filesystem::path& path, const char* what) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw InputError(path.string() + ": not a file of " + what);
+  }
+  std::ifstream stream(path);
+  if (!stream) throw InputError(path.string() + ": cannot read");
+  json object = json::parse(stream, nullptr, false);
+  if (object.is_discarded() || !object.is_object()) {
+    throw InputError(path.string() + ": not a JSON object of " + what);
+  }
+  return object;
+}
+
+bool file_exists(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
+}
+
+// The one segment glob (no '/') against one segment of name.
+bool segment_matches(std::string_view glob, std::string_view name) {
+  if (glob.empty()) return name.empty();
+  if (glob.front() == '*') {
+    for (std::size_t skip = 0; skip <= name.size(); ++skip) {
+      if (segment_matches(glob.substr(1), name.substr(skip))) return true;
+    }
+    return false;
+  }
+  if (name.empty()) return false;
+  return (glob.front() == '?' || glob.front() == name.front()) &&
+         segment_matches(glob.substr(1), name.substr(1));
+}
+
+std::vector<std::string_view> segments(std::string_view path) {
+  std::vector<std::string_view> parts;
+  while (true) {
+    const std::size_t slash = path.find('/');
+    parts.push_back(path.substr(0, slash));
+    if (slash == std::string_view::npos) return parts;
+    path.remove_prefix(slash + 1);
+  }
+}
+
+bool segments_match(const std::vector<std::string_view>& glob, std::size_t g,
+                    const std::vector<std::string_view>& name, std::size_t n) {
+  if (g == glob.size()) return n == name.size();
+  if (glob[g] == "**") {
+    for (std::size_t skip = n; skip <= name.size(); ++skip) {
+      if (segments_match(glob, g + 1, name, skip)) return true;
+    }
+    return false;
+  }
+  return n < name.size() && segment_matches(glob[g], name[n]) &&
+         segments_match(glob, g + 1, name, n + 1);
+}
+
+Tolerance tolerance_of(const json& value, const std::string& file, const std::string& key) {
+  try {
+    if (value.is_number()) return Tolerance::parse(value.dump());
+    if (value.is_string()) return Tolerance::parse(value.get<std::string>());
+  } catch (const UsageError& e) {
+    throw InputError(file + ": '" + key + "': " + e.what());
+  }
+  throw InputError(file + ": '" + key + "' must be a length: a number, \"2px\" or \"1%\"");
+}
+
+}  // namespace
+
+std::filesystem::path settings_sidecar(const std::filesystem::path& input) {
+  std::filesystem::path sidecar = input;
+  sidecar.replace_extension(".hullcook.json");
+  return sidecar;
+}
+
+bool glob_matches(std::string_view glob, std::string_view name) {
+  return segments_match(segments(glob), 0, segments(name), 0);
+}
+
+void apply_physics_json(PhysicsProperties& physics, const json& object, const std::string& file) {
+  if (!object.is_object()) throw InputError(file + ": 'physics' must be an object");
+  for (const auto& [key, value] : object.items()) {
+    auto number = [&, &key = key, &value = value]() {
+      if (!value.is_number() || !(value.get<double>() >= 0.0) ||
+          !(value.get<double>() <= kMaxPhysicsValue)) {
+        throw InputError(file + ": '" + key + "' must be a finite non-negative number (an f32)");
+      }
+      return value.get<double>();
+    };
+    auto bits = [&, &key = key, &value = value]() {
+      if (!value.is_number_unsigned() || value.get<std::uint64_t>() > 0xFFFF) {
+        throw InputError(file + ": '" + key + "' must be an integer in 0..65535");
+      }
+      return static_cast<std::uint16_t>(value.get<std::uint64_t>());
+    };
+    if (key == "density") {
+      physics.density = static_cast<float>(number());
+    } else if (key == "friction") {
+      physics.friction = static_cast<float>(number());
+    } else if (key == "restitution") {
+      physics.restitution = static_cast<float>(number());
+    } else if (key == "sensor" && value.is_boolean()) {
+      physics.sensor = value.get<bool>();
+    } else if (key == "category") {
+      physics.category_bits = bits();
+    } else if (key == "mask") {
+      physics.mask_bits = bits();
+    } else {
+      throw InputError(file + ": unknown or mistyped property '" + key +
+                       "' (density, friction, restitution, sensor, category, mask)");
+    }
+  }
+}
+
+Settings with_overrides(Settings settings, const json& object, const std::string& file) {
+  for (const auto& [key, value] : object.items()) {
+    if (key == "tau") {
+      settings.tau = tolerance_of(value, file, key);
+    } else if (key == "lods") {
+      if (!value.is_array()) throw InputError(file + ": 'lods' must be an array of lengths");
+      settings.lods.clear();
+      for (const json& lod : value) settings.lods.push_back(tolerance_of(lod, file, key));
+    } else if (key == "alpha") {
+      if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+          value.get<std::int64_t>() > 255) {
+        throw InputError(file + ": 'alpha' must be an integer in 0..255");
+      }
+      settings.alpha = static_cast<int>(value.get<std::int64_t>());
+    } else if (key == "max_verts") {
+      const bool valid = value.is_number_unsigned() &&
+                         (value.get<std::uint64_t>() == 0 ||
+                          (value.get<std::uint64_t>() >= 3 && value.get<std::uint64_t>() <= 65535));
+      if (!valid) throw InputError(file + ": 'max_verts' must be 0 (no limit) or 3..65535");
+      settings.max_verts = value.get<std::size_t>();
+    } else if (key == "measure") {
+      if (!value.is_string() || !parse_measure(value.get<std::string>())) {
+        throw InputError(file + ": 'measure' must be one of \"sl\", \"sp\", \"h1\", \"h2\"");
+      }
+      settings.measure = value.get<std::string>();
+    } else if (key == "physics") {
+      PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
+      apply_physics_json(physics, value, file);
+      settings.physics = physics;
+    } else {
+      throw InputError(file + ": unknown setting '" + key +
+                       "' (tau, lods, alpha, max_verts, measure, physics)");
+    }
+  }
+  return settings;
+}
+
+std::shared_ptr<const AssetSettings::Project> AssetSettings::project_for(
+    const std::filesystem::path& directory) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto found = projects_.find(directory);
+    if (found != projects_.end()) return found->second;
+  }
+  auto project = std::make_shared<Project>();
+  const std::filesystem::path file = directory / "hullcook.json";
+  if (file_exists(file)) {
+    project->file = file;
+    const json object = read_json_object(file, "project settings");
+    for (const auto& [key, value] : object.items()) {
+      if (key != "assets") {
+        throw InputError(file.string() + ": unknown key '" + key + "' (assets)");
+      }
+      if (!value.is_array()) throw InputError(file.string() + ": 'assets' must be an array");
+      for (const json& rule : value) {
+        if (!rule.is_object() || !rule.contains("match") || !rule["match"].is_string()) {
+          throw InputError(file.string() + ": every rule of 'assets' needs a \"match\" glob");
+        }
+        json settings = rule;
+        settings.erase("match");
+        with_overrides(Settings{}, settings, file.string());  // refused here, once, if malformed
+        project->rules.push_back(
+            {rule["match"].get<std::string>(), std::make_shared<const json>(std::move(settings))});
+      }
+    }
+  } else if (directory.has_parent_path() && directory.parent_path() != directory) {
+    std::shared_ptr<const Project> parent = project_for(directory.parent_path());
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return projects_.emplace(directory, parent).first->second;
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return projects_.emplace(directory, std::move(project)).first->second;
+}
+
+std::shared_ptr<const Settings> AssetSettings::for_input(const std::filesystem::path& path) {
+  const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
+  const std::shared_ptr<const Project> project = project_for(absolute.parent_path());
+  const std::filesystem::path sidecar = settings_sidecar(path);
+  const bool has_sidecar = file_exists(sidecar);
+  if (project->rules.empty() && !has_sidecar) return nullptr;
+  Settings settings = base_;
+  bool changed = false;
+  if (!project->rules.empty()) {
+    const std::string name =
+        absolute.lexically_relative(project->file.parent_path()).generic_string();
+    for (const Rule& rule : project->rules) {
+      if (!glob_matches(rule.glob, name)) continue;
+      settings = with_overrides(std::move(settings), *rule.settings, project->file.string());
+      changed = true;
+    }
+  }
+  if (has_sidecar) {
+    settings = with_overrides(std::move(settings), read_json_object(sidecar, "settings"),
+                              sidecar.string());
+    changed = true;
+  }
+  if (!changed) return nullptr;
+  // The levels keep the units of τ, as --lod must.
+  for (const Tolerance& lod : settings.lods) {
+    if (lod.relative != settings.tau.relative) {
+      throw InputError(path.string() + ": its settings give 'lods' and 'tau' in different units (" +
+                       (has_sidecar ? sidecar : project->file).string() + ")");
+    }
+  }
+  return std::make_shared<const Settings>(std::move(settings));
+}
+
+std::vector<std::filesystem::path> AssetSettings::files_for(const std::filesystem::path& path) {
+  std::vector<std::filesystem::path> files;
+  const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
+  const std::shared_ptr<const Project> project = project_for(absolute.parent_path());
+  if (!project->file.empty()) files.push_back(project->file);
+  if (file_exists(settings_sidecar(path))) files.push_back(settings_sidecar(path));
+  return files;
+}
+
+}  // namespace hullcook
