@@ -11,6 +11,7 @@
 #include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -64,11 +65,12 @@ void check_asset_name(const CookCommand& command,
   }
 }
 
-// --name: the one asset of a file is `name`; with --grid its cells are name/INDEX.
-void rename_assets(CookResult& result, const std::filesystem::path& input,
-                   const std::string& name) {
-  const std::size_t file_name = input.filename().generic_string().size();
-  for (CookedAsset& asset : result.assets) asset.name = name + asset.name.substr(file_name);
+// --name: the one asset of a file is `name`; with --grid its cells are name/INDEX, a sheet's
+// frames name/FRAME. The default name (the file's, or a sheet's without .json) holds no '/'.
+void rename_assets(CookResult& result, const std::string& name) {
+  for (CookedAsset& asset : result.assets) {
+    asset.name = name + asset.name.substr(std::min(asset.name.find('/'), asset.name.size()));
+  }
 }
 
 void add_cook(CLI::App& root, CommandAction& action) {
@@ -80,7 +82,9 @@ void add_cook(CLI::App& root, CommandAction& action) {
                           "Directories are searched for images recursively; each image is "
                           "one asset named by its "
                           "path relative to the directory.");
-  app->add_option("inputs", command->inputs, "Image files, directories or .poly files")
+  app->add_option("inputs", command->inputs,
+                  "Image files, directories, .poly files or sprite sheets (TexturePacker or "
+                  "Aseprite .json)")
       ->required()
       ->check(CLI::ExistingPath);
   app->add_option("-o,--output", command->output,
@@ -139,7 +143,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
         progress.advance(count);
       };
       CookResult result = cook(inputs, command->settings, on_cooked);
-      if (!command->name.empty()) rename_assets(result, inputs.front(), command->name);
+      if (!command->name.empty()) rename_assets(result, command->name);
       auto files =
           output_files(result, outputs, command->settings, files_read(result), stream.get());
       if (!command->depfile.empty()) {

@@ -12,6 +12,7 @@
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
+#include "sheet.h"
 
 #include <nlohmann/json.hpp>
 #include "hullcook/cook/process_heap.h"
@@ -50,19 +51,56 @@ struct InputFile {
   std::shared_ptr<const AlphaImage> sheet;
   GridCell cell;
   double decode_ms = 0;  // [ms] the sheet's decoding, counted on its first cell
+  // A frame of a sheet JSON (path): frames->frames[frame] lies in `sheet`, its atlas.
+  std::shared_ptr<const Sheet> frames;
+  std::size_t frame = 0;
 };
 
 bool is_poly_file(const std::filesystem::path& path) { return path.extension() == ".poly"; }
 
 TraceSettings trace_settings(const Settings& settings, double simplify_px);
 
+// A sheet JSON's frames, each named SHEET/FRAME (SHEET: the file's name without .json). The atlas
+// is decoded here, once; its errors name the JSON, which named it.
+void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path& path,
+                      const std::string& name, const Settings& settings,
+                      AssetSettings& asset_settings) {
+  auto sheet = std::make_shared<const Sheet>(read_sheet(path, settings.max_pixels));
+  const auto start = Clock::now();
+  // With the sheet's own alpha (its sidecar or project rule), as a grid's sheet.
+  const std::shared_ptr<const Settings> own = asset_settings.for_input(path);
+  std::shared_ptr<const AlphaImage> atlas;
+  try {
+    atlas = std::make_shared<const AlphaImage>(
+        load_alpha(sheet->image, trace_settings(own ? *own : settings, 0)));
+  } catch (const InputError& e) {
+    throw InputError(path.string() + ": meta.image: " + e.what());
+  }
+  const double decode_ms = milliseconds_since(start);
+  check_frames_inside(*sheet, path, atlas->width, atlas->height);
+  const std::string sheet_name = name.substr(0, name.size() - path.extension().string().size());
+  for (std::size_t i = 0; i < sheet->frames.size(); ++i) {
+    files.push_back({path.string(),
+                     sheet_name + "/" + sheet->frames[i].name,
+                     atlas,
+                     {},
+                     i == 0 ? decode_ms : 0,
+                     sheet,
+                     i});
+  }
+}
+
 // Adds an input file; with --grid an image adds its cells instead, named NAME/INDEX (Tiled's
 // row-major tile number), sorted by name as link sorts assets. The sheet is decoded here, once.
 void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
                     const std::string& name, const Settings& settings,
                     AssetSettings& asset_settings) {
+  if (is_sheet_file(path)) {
+    add_sheet_frames(files, path, name, settings, asset_settings);
+    return;
+  }
   if (!settings.grid || is_poly_file(path)) {
-    files.push_back({path.string(), name, nullptr, {}, 0});
+    files.push_back({path.string(), name, nullptr, {}, 0, nullptr, 0});
     return;
   }
   const auto start = Clock::now();
@@ -82,7 +120,7 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
   const std::size_t first = files.size();
   for (const GridCell& cell : cells) {
     files.push_back({path.string(), name + "/" + std::to_string(cell.index), sheet, cell,
-                     files.size() == first ? decode_ms : 0});
+                     files.size() == first ? decode_ms : 0, nullptr, 0});
   }
   std::sort(files.begin() + static_cast<std::ptrdiff_t>(first), files.end(),
             [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
@@ -272,11 +310,20 @@ TraceSettings trace_settings(const Settings& settings, double simplify_px) {
 // recognisable at large τ.
 double default_simplify(double tau_px) { return std::clamp(tau_px / 4, 0.05, 1.0); }
 
+// Normalised image coordinates of the output origin: a sheet's frame's own, else --pivot.
+Vec2 pivot_of(const InputFile& file, const Settings& settings) {
+  if (file.frames && file.frames->frames[file.frame].pivot) {
+    return *file.frames->frames[file.frame].pivot;
+  }
+  return Vec2{settings.pivot_u, settings.pivot_v};
+}
+
 PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   auto start = Clock::now();
   PreparedInput prepared;
-  AlphaImage image = file.sheet ? crop(*file.sheet, file.cell)
-                                : load_alpha(file.path, trace_settings(settings, 0));
+  AlphaImage image = file.frames  ? frame_image(*file.sheet, file.frames->frames[file.frame])
+                     : file.sheet ? crop(*file.sheet, file.cell)
+                                  : load_alpha(file.path, trace_settings(settings, 0));
   prepared.decode_ms = file.sheet ? file.decode_ms : milliseconds_since(start);
   start = Clock::now();
   prepared.width = image.width;
@@ -298,9 +345,9 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   prepared.traced_vertices = traced.traced_vertices;
   prepared.warnings = std::move(traced.warnings);
   double scale = 1.0 / settings.pixels_per_unit;
+  const Vec2 pivot = pivot_of(file, settings);
   prepared.transform =
-      Transform{scale, Vec2{settings.pivot_u * image.width, settings.pivot_v * image.height},
-                !settings.y_down};
+      Transform{scale, Vec2{pivot.x * image.width, pivot.y * image.height}, !settings.y_down};
   prepared.trace_ms = milliseconds_since(start);
   return prepared;
 }
@@ -371,7 +418,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.image_width = input.width;
   asset.image_height = input.height;
   asset.pixels_per_unit = settings.pixels_per_unit;
-  asset.pivot = Vec2{settings.pivot_u, settings.pivot_v};
+  asset.pivot = pivot_of(file, settings);
   asset.transform = input.transform;
   asset.measure = settings.measure;
   asset.physics = physics_for(file.path, settings);
@@ -475,8 +522,9 @@ void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
   for (std::size_t i = 0; i < files.size(); ++i) {
     // By its hulls: the regions may be freed already (Settings::keep_outlines).
     const CookedAsset& asset = result.assets[i];
-    const bool empty_cell = files[i].sheet && asset.stats.hulls == 0;
-    if (files[i].sheet) sheet_has_cells[files[i].path] |= !empty_cell;
+    const bool cell = files[i].sheet && !files[i].frames;  // a sheet JSON's frames are kept
+    const bool empty_cell = cell && asset.stats.hulls == 0;
+    if (cell) sheet_has_cells[files[i].path] |= !empty_cell;
     if (!empty_cell) {
       kept.push_back(std::move(result.assets[i]));
       kept_index.push_back(result.cooked_index[i]);
@@ -538,9 +586,15 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   AssetSettings asset_settings(settings);
   std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings);
+  CookResult result;
+  for (const InputFile& file : files) {
+    if (file.frames &&
+        (result.sheet_images.empty() || result.sheet_images.back() != file.frames->image)) {
+      result.sheet_images.push_back(file.frames->image);
+    }
+  }
   // Every asset would pay its page faults again otherwise (a tenth of a cook): see there.
   keep_freed_memory();
-  CookResult result;
   result.assets.resize(files.size());
   result.cooked_index.resize(files.size());
   std::iota(result.cooked_index.begin(), result.cooked_index.end(), std::size_t{0});

@@ -71,6 +71,7 @@ std::vector<std::filesystem::path> files_read(const CookResult& result) {
       files.push_back(std::move(file));
     }
   }
+  files.insert(files.end(), result.sheet_images.begin(), result.sheet_images.end());
   return files;
 }
 

@@ -89,6 +89,7 @@ inline constexpr double kDefaultWeld = 0.005;
 struct CookResult {
   std::vector<CookedAsset> assets;        // in name order, whatever the order of the inputs
   std::vector<std::size_t> cooked_index;  // per asset: the index on_cooked was given with it
+  std::vector<std::filesystem::path> sheet_images;  // the atlases of sheet JSON inputs
 };
 
 // Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
@@ -97,7 +98,8 @@ struct CookResult {
 using AssetCooked =
     std::function<void(std::size_t index, std::size_t count, const CookedAsset& asset)>;
 
-// Cooks images (files or directories, recursing over images) and .poly files.
+// Cooks images (files or directories, recursing over images), .poly files and sprite sheets
+// (TexturePacker or Aseprite JSON named as inputs, each frame an asset SHEET/FRAME).
 // Throws InputError naming the file and the problem (or whatever on_cooked throws, for the
 // first failing asset in input order); nothing is written.
 CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings& settings,
@@ -116,7 +118,8 @@ void refuse_too_many_holes(const std::vector<Region>& regions, const std::string
 // The physics sidecar of an input image: NAME.physics.json beside NAME.png.
 std::filesystem::path physics_sidecar(const std::filesystem::path& input);
 
-// The files a cook read: every asset's source, and its physics sidecar where there is one.
+// The files a cook read: every asset's source, and its physics sidecar where there is one, and
+// the sheets' atlases.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
 
 class BundleStream;
