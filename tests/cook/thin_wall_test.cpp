@@ -213,8 +213,8 @@ TEST(Issue19Fuzz, WallsJustThickerThanTheRefusalWidthAreCutWithinContract) {
 // whole spike as one piece would keep the contract. DISABLED until the decomposer avoids the cut
 // or a principled rule refuses such spikes as bad input: it fails today.
 TEST(Issue19Fuzz, DISABLED_SpikeThinnerThanALongerSpikesSlackIsRefusedOrCutWithinContract) {
-  const auto path =
-      std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/core/data/issue19_fuzz_two_spikes.poly";
+  const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) /
+                    "tests/core/open_findings/issue19_fuzz_two_spikes.poly";
   const std::vector<Region> regions = read_poly_file(path);
   try {
     refuse_sliver_regions(regions, path.string());
