@@ -133,7 +133,8 @@ Status validate_assets(const unsigned char* bytes, const BundleHeader& header) {
     if (!finite(asset.pixels_per_unit) || !(asset.pixels_per_unit > 0.0f)) return Status::malformed;
     if (!finite(asset.pivot_u) || !finite(asset.pivot_v)) return Status::malformed;
     // Dequantized coordinates ((2^31 + 2^15) quanta at most) must stay finite in float.
-    if (!finite(asset.quant_step) || !(asset.quant_step > 0.0f) || asset.quant_step > 1e28f)
+    if (!finite(asset.quant_step) || !(asset.quant_step > 0.0f) ||
+        asset.quant_step > format::kMaxQuantStep)
       return Status::malformed;
     if (i == 0 && asset.first_level != 0) return Status::malformed;
     const std::uint32_t end = level_end(bytes, header, i);

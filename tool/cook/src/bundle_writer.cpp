@@ -166,6 +166,12 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
   if (static_cast<double>(result.step) > bound * std::sqrt(2.0)) {
     result.step = std::nextafter(result.step, 0.0f);
   }
+  // A tiny pixels per unit makes the 1/64 px floor of the bound huge (issue 19's fuzzing of link:
+  // 2.9e-39 px per unit); readers refuse a step beyond kMaxQuantStep.
+  if (!(result.step <= format::kMaxQuantStep)) {
+    fail(asset, "pixels per unit too small for the bundle's quantization grid (a step of " +
+                    std::to_string(result.step) + " output units)");
+  }
   for (int attempt = 0; attempt < 24; ++attempt, result.step *= 0.5f) {
     if (!(result.step > 0.0f)) break;
     result.levels.assign(levels.size(), {});

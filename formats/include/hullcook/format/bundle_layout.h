@@ -48,6 +48,9 @@ inline constexpr std::uint32_t kEmptySlot = 0xFFFFFFFFu;
 
 // A hull has at least this many vertices.
 inline constexpr std::uint32_t kMinHullVertices = 3;
+// The largest quantization step a reader accepts (SPEC §11): beyond it a 16-bit delta times the
+// step overflows a float.
+inline constexpr float kMaxQuantStep = 1e28f;
 
 struct BundleHeader {
   std::uint8_t magic[4];
