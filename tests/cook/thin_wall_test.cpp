@@ -205,23 +205,63 @@ TEST(Issue19Fuzz, WallsJustThickerThanTheRefusalWidthAreCutWithinContract) {
   }
 }
 
-// The poly fuzzer on this branch (scripts/fuzz's fuzz_poly, 10 minutes): a 64-gon of radius 7
-// with two vertices drawn out into spikes 6e7 and 8.3e8 long. The longer sets the rounding slack
-// (0.83); the shorter, 4.3 wide at its base, is cut lengthwise from its base (the only diagonals
-// that resolve the notch there point into it), and under every measure at τ 0 and 1 % of R a
-// piece comes out a sliver (area 3.4e7 over a length of 6e7), so decompose and cook exit 4. The
-// whole spike as one piece would keep the contract. DISABLED until the decomposer avoids the cut
-// or a principled rule refuses such spikes as bad input: it fails today.
-TEST(Issue19Fuzz, DISABLED_SpikeThinnerThanALongerSpikesSlackIsRefusedOrCutWithinContract) {
-  const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) /
-                    "tests/core/open_findings/issue19_fuzz_two_spikes.poly";
+// The poly fuzzer (scripts/fuzz's fuzz_poly, 10 minutes): a 64-gon of radius 7 with two vertices
+// drawn out into spikes 6e7 and 8.3e8 long. The longer sets the rounding slack (0.83); the shorter
+// is 1.2 wide at its base, and under every measure at τ 0 and 1 % of R the piece holding its tip
+// came out a sliver (area 3.4e7 over a length of 6e7), so decompose and cook exited 4. Its sides
+// come within the refusal width of each other: bad input, exit 2, naming the spike.
+TEST(Issue19Fuzz, SpikeThinnerThanALongerSpikesSlackIsRefusedAsBadInput) {
+  const auto path =
+      std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/core/data/issue19_fuzz_two_spikes.poly";
   const std::vector<Region> regions = read_poly_file(path);
   try {
-    refuse_sliver_regions(regions, path.string());
-  } catch (const InputError&) {
-    return;
+    refuse_sliver_regions(regions, "spikes.poly");
+    ADD_FAILURE() << "not refused";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.code, ExitCode::bad_input);
+    EXPECT_TRUE(std::string(error.what())
+                    .starts_with("spikes.poly: region 1 is too thin to cut into pieces within the "
+                                 "output's contract (the outer boundary comes within "))
+        << error.what();
+    // Refused where it first comes near itself: the radius-7 body's own vertices are within the
+    // slack of each other's edges, so the spike's sides are not the only place.
+    EXPECT_NE(std::string(error.what()).find(" of itself at ("), std::string::npos) << error.what();
   }
-  expect_cut_within_contract(regions[0], "two spikes");
+}
+
+// A triangle spike w wide and 1e6 long on a 1000 px square, beside a spike 1e9 long that sets
+// the slack to 1: refused up to twice the slack, cut within the contract from a few times it; and
+// a unit square with a flat near-collinear chain (vertices 1e-12 off the line, edges 1e-6 long)
+// is never refused: nearness along the ring is an edge's length, not a spike.
+TEST(Issue19Fuzz, SpikesAreRefusedUpToTheRefusalWidthAndCutWithinContractBeyond) {
+  auto region_with_spike = [](double width) {
+    return Region{{{0, 0},
+                   {500, -1e9},
+                   {1000, 0},
+                   {1000, 1000},
+                   {500 + width / 2, 1000},
+                   {500, 1e6},
+                   {500 - width / 2, 1000},
+                   {0, 1000}},
+                  {}};
+  };
+  for (double width : {0.5, 1.9, 8.0, 40.0}) {
+    const std::string what = "spike " + std::to_string(width) + " wide";
+    const Region region = region_with_spike(width);
+    if (width < 2.0) {
+      EXPECT_THROW(refuse_sliver_regions({region}, "spike.poly"), InputError) << what;
+    } else {
+      EXPECT_NO_THROW(refuse_sliver_regions({region}, "spike.poly")) << what;
+      expect_cut_within_contract(region, what);
+    }
+  }
+  Ring flat{{0, 0}, {1, 0}, {1, 1}};
+  for (int k = 1; k < 1000; ++k) {
+    const double x = 1.0 - k * 1e-6;
+    flat.push_back({x, 1.0 + ((k % 2) ? 1e-12 : -1e-12)});
+  }
+  flat.push_back({0, 1});
+  EXPECT_NO_THROW(refuse_sliver_regions({Region{flat, {}}}, "flat.poly"));
 }
 
 }  // namespace

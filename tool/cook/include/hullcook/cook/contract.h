@@ -42,8 +42,11 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 // Throws InputError "SOURCE: region R is too thin to cut into pieces within the output's contract
 // (area A over a length of L)" when a region of outline is itself a sliver as the contract judges
 // pieces checked against outline: no decomposition of it could keep the contract, so it is bad
-// input, not an internal error (issue 19's fuzzing: a 1.6 wide spike 1e9 long). Regions are
-// numbered from first_region_number.
+// input, not an internal error (issue 19's fuzzing: a 1.6 wide spike 1e9 long); or "(hole H
+// comes within D of the outer boundary at (x, y), a wall no thicker than W)" / "(the outer
+// boundary comes within D of itself at (x, y), a spike or neck no wider than W)" when two rings,
+// or one ring's two sides, come within twice the sliver width of an edge: at the contract's
+// resolution they touch. Regions are numbered from first_region_number.
 void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
                            std::size_t first_region_number = 1);
 
