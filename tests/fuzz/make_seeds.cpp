@@ -2,8 +2,9 @@
 // build tree (scripts/fuzz): OUT_DIR/poly (the small sample polygons and the core tests' data),
 // OUT_DIR/image (the small sample sprites as they are, and every sprite shrunk to at most
 // kSeedSide px a side as PNG, BMP, TGA and WebP), OUT_DIR/bundle (bundles cooked from those
-// polygons and images, one asset each, and one with several assets, levels and physics) and
-// OUT_DIR/fragment (fragments of some of them, for link's reader).
+// polygons and images, one asset each, and one with several assets, levels and physics),
+// OUT_DIR/fragment (fragments of some of them, for link's reader) and OUT_DIR/sheet (sprite
+// sheets' JSON in each form the importers read).
 #include "canvas.h"  // tool/cook/src: encode_png
 #include "fuzz_limits.h"
 
@@ -235,6 +236,44 @@ void make_fragment_seeds(const std::vector<fs::path>& polys, const std::vector<f
   write_fragment_of(pngs, "several_assets_levels_physics.hcf", rich);
 }
 
+// Sprite sheets in the three forms the importers read, describing the small seed images laid out
+// in a row: a TexturePacker hash (trimmed, rotated, pivots), a TexturePacker array and an Aseprite
+// hash with slices whose keys give pivots.
+void make_sheet_seeds(const fs::path& out) {
+  const std::string texturepacker_hash = R"({"frames": {
+  "walk/01.png": {"frame": {"x": 0, "y": 0, "w": 12, "h": 20}, "rotated": false, "trimmed": true,
+    "spriteSourceSize": {"x": 2, "y": 1, "w": 12, "h": 20}, "sourceSize": {"w": 16, "h": 24},
+    "pivot": {"x": 0.5, "y": 1}},
+  "walk/02.png": {"frame": {"x": 12, "y": 0, "w": 12, "h": 20}, "rotated": true, "trimmed": true,
+    "spriteSourceSize": {"x": 0, "y": 3, "w": 12, "h": 20}, "sourceSize": {"w": 12, "h": 24}},
+  "idle.png": {"frame": {"x": 0, "y": 20, "w": 8, "h": 8}, "rotated": false, "trimmed": false,
+    "spriteSourceSize": {"x": 0, "y": 0, "w": 8, "h": 8}, "sourceSize": {"w": 8, "h": 8}}},
+ "meta": {"image": "hero.png", "size": {"w": 32, "h": 28}, "scale": "1"}})";
+  const std::string texturepacker_array = R"({"frames": [
+  {"filename": "coin/0", "frame": {"x": 0, "y": 0, "w": 10, "h": 10}, "rotated": false,
+   "trimmed": false, "spriteSourceSize": {"x": 0, "y": 0, "w": 10, "h": 10},
+   "sourceSize": {"w": 10, "h": 10}, "pivot": {"x": 0.5, "y": 0.5}},
+  {"filename": "coin/1", "frame": {"x": 10, "y": 0, "w": 6, "h": 10}, "rotated": false,
+   "trimmed": true, "spriteSourceSize": {"x": 2, "y": 0, "w": 6, "h": 10},
+   "sourceSize": {"w": 10, "h": 10}}],
+ "meta": {"image": "coins.png", "size": {"w": 16, "h": 10}}})";
+  const std::string aseprite = R"({"frames": {
+  "bat 0.aseprite": {"frame": {"x": 0, "y": 0, "w": 16, "h": 16}, "rotated": false,
+    "trimmed": false, "spriteSourceSize": {"x": 0, "y": 0, "w": 16, "h": 16},
+    "sourceSize": {"w": 16, "h": 16}, "duration": 100},
+  "bat 1.aseprite": {"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "rotated": false,
+    "trimmed": false, "spriteSourceSize": {"x": 0, "y": 0, "w": 16, "h": 16},
+    "sourceSize": {"w": 16, "h": 16}, "duration": 100}},
+ "meta": {"app": "https://www.aseprite.org/", "image": "bat.png", "size": {"w": 32, "h": 16},
+  "frameTags": [], "layers": [],
+  "slices": [{"name": "body", "color": "#0000ffff", "keys": [
+    {"frame": 0, "bounds": {"x": 2, "y": 2, "w": 12, "h": 12}, "pivot": {"x": 6, "y": 11}},
+    {"frame": 1, "bounds": {"x": 3, "y": 2, "w": 10, "h": 12}, "pivot": {"x": 5, "y": 11}}]}]}})";
+  write_bytes(out / "texturepacker_hash.json", texturepacker_hash);
+  write_bytes(out / "texturepacker_array.json", texturepacker_array);
+  write_bytes(out / "aseprite_slices.json", aseprite);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -244,12 +283,13 @@ int main(int argc, char** argv) {
   }
   const fs::path source = argv[1], out = argv[2];
   try {
-    const char* corpora[] = {"poly", "image", "bundle", "fragment"};
+    const char* corpora[] = {"poly", "image", "bundle", "fragment", "sheet"};
     for (const char* corpus : corpora) fs::create_directories(out / corpus);
     const std::vector<fs::path> polys = make_poly_seeds(source, out / "poly");
     const std::vector<fs::path> images = make_image_seeds(source, out / "image");
     make_bundle_seeds(polys, images, out / "bundle");
     make_fragment_seeds(polys, images, out / "fragment");
+    make_sheet_seeds(out / "sheet");
     for (const char* corpus : corpora) {
       const auto count = std::distance(fs::directory_iterator(out / corpus), {});
       std::printf("fuzz_make_seeds: %s: %td seeds\n", corpus, count);

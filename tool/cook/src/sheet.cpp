@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 namespace hullcook {
@@ -186,10 +187,17 @@ bool is_sheet_file(const std::filesystem::path& path) {
 }
 
 Sheet read_sheet(const std::filesystem::path& path, std::uint64_t max_pixels) {
-  const SheetReader reader(path);
   std::ifstream stream(path, std::ios::binary);
-  if (!stream) reader.fail("", "cannot read");
-  const Json json = Json::parse(stream, nullptr, false);
+  if (!stream) SheetReader(path).fail("", "cannot read");
+  const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+  if (stream.bad()) SheetReader(path).fail("", "cannot read");
+  return parse_sheet(text, path, max_pixels);
+}
+
+Sheet parse_sheet(std::string_view text, const std::filesystem::path& path,
+                  std::uint64_t max_pixels) {
+  const SheetReader reader(path);
+  const Json json = Json::parse(text, nullptr, false);
   if (json.is_discarded() || !json.is_object()) reader.fail("", "not a JSON object");
   if (!json.contains("frames") || !json.contains("meta")) {
     reader.fail("", "not a sprite sheet (TexturePacker or Aseprite JSON: 'frames' and 'meta')");

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hullcook {
@@ -38,6 +39,11 @@ bool is_sheet_file(const std::filesystem::path& path);
 // Reads and checks a sheet's JSON (not its atlas): throws InputError naming path and the problem.
 // A frame's untrimmed size may hold at most max_pixels pixels.
 Sheet read_sheet(const std::filesystem::path& path, std::uint64_t max_pixels);
+
+// Same as read_sheet() on the JSON text already in memory; path names the file in errors and
+// meta.image is relative to it.
+Sheet parse_sheet(std::string_view text, const std::filesystem::path& path,
+                  std::uint64_t max_pixels);
 
 // Throws InputError naming path unless every frame lies inside a width x height atlas.
 void check_frames_inside(const Sheet& sheet, const std::filesystem::path& path, int width,
