@@ -8,7 +8,6 @@
 #include <fstream>
 
 namespace hullcook {
-namespace {
 
 using json = nlohmann::json;
 
@@ -25,6 +24,8 @@ json read_json_object(const std::filesystem::path& path, const char* what) {
   }
   return object;
 }
+
+namespace {
 
 bool file_exists(const std::filesystem::path& path) {
   std::error_code error;

@@ -37,6 +37,10 @@ std::filesystem::path settings_sidecar(const std::filesystem::path& input);
 // matches any number of whole segments (and "**/" none).
 bool glob_matches(std::string_view glob, std::string_view name);
 
+// The JSON object in the file at path (a sidecar or project file of what, e.g. "settings"). Throws
+// InputError "PATH: not a file of WHAT" / "cannot read" / "not a JSON object of WHAT".
+nlohmann::json read_json_object(const std::filesystem::path& path, const char* what);
+
 // Settings with the keys of json (see above) applied. Throws InputError naming file and the key
 // on an unknown key or a bad value.
 Settings with_overrides(Settings settings, const nlohmann::json& json, const std::string& file);

@@ -367,16 +367,8 @@ std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
   const std::filesystem::path sidecar = physics_sidecar(input);
   std::error_code error;
   if (!std::filesystem::exists(sidecar, error)) return settings.physics;
-  if (!std::filesystem::is_regular_file(sidecar, error)) {
-    throw InputError(sidecar.string() + ": not a file of physics properties");
-  }
   PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
-  std::ifstream stream(sidecar);
-  if (!stream) throw InputError(sidecar.string() + ": cannot read");
-  nlohmann::json json = nlohmann::json::parse(stream, nullptr, false);
-  if (json.is_discarded() || !json.is_object()) {
-    throw InputError(sidecar.string() + ": not a JSON object of physics properties");
-  }
+  const nlohmann::json json = read_json_object(sidecar, "physics properties");
   apply_physics_json(physics, json, sidecar.string());
   return physics;
 }
