@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
