@@ -47,6 +47,9 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/hullcook-runtime.pc
 # game's build (cmake/HullcookBundle.cmake).
 if(TARGET hullcook)
   install(TARGETS hullcook EXPORT hullcookToolTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # Found by the cooker at bin/../lib/hullcook (tool/cook/src/draco_module.cpp): not LIBDIR,
+  # which may be lib/<triplet>.
+  install(TARGETS hullcook_draco LIBRARY DESTINATION lib/hullcook)
   install(EXPORT hullcookToolTargets NAMESPACE hullcook:: FILE hullcookToolTargets.cmake
           DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hullcook)
 endif()

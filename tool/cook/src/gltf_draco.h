@@ -26,7 +26,14 @@ struct DracoMesh {
 };
 
 // Encodes the mesh (edgebreaker, positions quantized to `position_bits`) and decodes it again to
-// measure it. Throws OutputError naming `name` when Draco fails.
+// measure it. Throws OutputError naming `name` when Draco fails, or when the Draco module
+// (hullcook_draco.so, loaded on first use: see draco_module.cpp) cannot be loaded.
 DracoMesh draco_encode(const TriangleMesh& mesh, int position_bits, const std::string& name);
+
+// The Draco module's entry point, extern "C": bool (const TriangleMesh*, int position_bits,
+// const std::string* name, DracoMesh* out, std::string* error), false with *error set on failure.
+inline constexpr const char* kDracoEntryPoint = "hullcook_draco_encode";
+using DracoEntryPoint = bool (*)(const TriangleMesh*, int, const std::string*, DracoMesh*,
+                                 std::string*) noexcept;
 
 }  // namespace hullcook
