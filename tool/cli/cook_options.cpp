@@ -123,6 +123,17 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
   command.add_option("--spacing", options.spacing, "With --grid: px between cells")
       ->check(CLI::Range(0, 65535))
       ->group("Sheets");
+  command
+      .add_flag("--tile", options.tile,
+                "With --grid: a tileset; each cell's shape stays inside the cell and meets its "
+                "border exactly (no seams between solid neighbours)")
+      ->group("Sheets");
+  command
+      .add_option("--snap", options.snap,
+                  "With --tile: outline points within this many px of the cell's border lie on it")
+      ->check(number_in(0, 16, "a distance in [0, 16] px"))
+      ->capture_default_str()
+      ->group("Sheets");
 
   command
       .add_option("--ppu", settings.pixels_per_unit, "Pixels per output unit (e.g. 32 px = 1 m)")
@@ -202,9 +213,11 @@ void finish_cook_options(const CLI::App& command, Settings& settings, const Cook
     Grid grid = Grid::parse(options.grid);
     grid.margin = options.margin;
     grid.spacing = options.spacing;
+    if (options.tile) grid.tile_snap = options.snap;
+    if (!options.tile && command.count("--snap") > 0) throw UsageError("--snap goes with --tile");
     settings.grid = grid;
-  } else if (command.count("--margin") > 0 || command.count("--spacing") > 0) {
-    throw UsageError("--margin and --spacing describe a --grid: give one");
+  } else if (command.count("--margin") > 0 || command.count("--spacing") > 0 || options.tile) {
+    throw UsageError("--margin, --spacing and --tile describe a --grid: give one");
   }
   if (options.weld >= 0) settings.weld = options.weld;
   if (options.simplify >= 0) settings.simplify = options.simplify;

@@ -18,6 +18,8 @@ struct CookOptions {
   std::string grid;
   int margin = 0;
   int spacing = 0;
+  bool tile = false;
+  double snap = 1.0;  // [px]
   PhysicsProperties physics;
 };
 

@@ -166,6 +166,17 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
   if (static_cast<double>(result.step) > bound * std::sqrt(2.0)) {
     result.step = std::nextafter(result.step, 0.0f);
   }
+  if (asset.tile) {
+    // Half a pixel over the largest power of two that fits: the cell's borders, at whole or half
+    // pixels from the pivot, fall on the grid (and stay on it when the step is halved below), so
+    // neighbouring tiles' hulls meet exactly.
+    const double half_pixel = 0.5 / asset.pixels_per_unit;
+    double aligned = half_pixel;
+    while (aligned > result.step && aligned > 0.0) aligned *= 0.5;
+    // Exact when pixels per unit is a power of two; otherwise the borders are off by the f32
+    // rounding of the step, far below any engine's slop.
+    if (aligned > 0.0) result.step = static_cast<float>(aligned);
+  }
   // A tiny pixels per unit makes the 1/64 px floor of the bound huge (issue 19's fuzzing of link:
   // 2.9e-39 px per unit); readers refuse a step beyond kMaxQuantStep.
   if (!(result.step <= format::kMaxQuantStep)) {

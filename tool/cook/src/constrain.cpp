@@ -302,9 +302,20 @@ class Constrainer {
 
 }  // namespace
 
+bool EngineLimits::Box::holds(Vec2 p) const {
+  const double slack = kOutsideBoxFraction * std::max(high.x - low.x, high.y - low.y);
+  return p.x >= low.x - slack && p.x <= high.x + slack && p.y >= low.y - slack &&
+         p.y <= high.y + slack;
+}
+
 bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
   if (hull.size() < 3 || signed_area(hull) <= 0) return false;
   if (limits.max_verts != 0 && hull.size() > limits.max_verts) return false;
+  if (limits.keep_inside) {
+    for (Vec2 p : hull) {
+      if (!limits.keep_inside->holds(p)) return false;
+    }
+  }
   for (std::size_t i = 0; i < hull.size(); ++i) {
     if (turn_height(hull, i) <= 0) return false;
   }

@@ -220,6 +220,14 @@ std::string limits_defect(const Ring& hull, const EngineLimits& limits) {
     return "its hull has " + std::to_string(n) + " vertices (at most " +
            std::to_string(limits.max_verts) + ")";
   }
+  if (limits.keep_inside) {
+    for (Vec2 p : hull) {
+      if (!limits.keep_inside->holds(p)) {
+        return "its hull's vertex " + point(p) + " lies outside the tile " +
+               point(limits.keep_inside->low) + " - " + point(limits.keep_inside->high);
+      }
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = i + 1; j < n; ++j) {
       const double apart = glm::length(hull[i] - hull[j]);
@@ -274,7 +282,8 @@ std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limi
   if (direction_changes > 2) {
     return HullDefect{"its hull winds " + std::to_string(direction_changes / 2) + " times", false};
   }
-  if ((limits.max_verts != 0 || limits.weld > 0) && !hull_meets_limits(hull, limits)) {
+  if ((limits.max_verts != 0 || limits.weld > 0 || limits.keep_inside) &&
+      !hull_meets_limits(hull, limits)) {
     return HullDefect{limits_defect(hull, limits), true};
   }
   return std::nullopt;

@@ -13,6 +13,7 @@
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
 #include "sheet.h"
+#include "tile_snap.h"
 
 #include <nlohmann/json.hpp>
 #include "hullcook/cook/process_heap.h"
@@ -343,6 +344,11 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   prepared.regions = std::move(traced.regions);
   prepared.traced_vertices = traced.traced_vertices;
   prepared.warnings = std::move(traced.warnings);
+  const bool grid_cell = file.sheet && !file.frames;
+  if (grid_cell && settings.grid && settings.grid->tile_snap) {
+    prepared.regions = snap_to_cell(prepared.regions, image.width, image.height,
+                                    *settings.grid->tile_snap, file.name, prepared.warnings);
+  }
   double scale = 1.0 / settings.pixels_per_unit;
   const Vec2 pivot = pivot_of(file, settings);
   prepared.transform =
@@ -413,6 +419,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.transform = input.transform;
   asset.measure = settings.measure;
   asset.physics = physics_for(file.path, settings);
+  asset.tile = file.sheet && !file.frames && settings.grid && settings.grid->tile_snap;
   asset.warnings = std::move(input.warnings);
   asset.stats.traced_vertices = input.traced_vertices;
   asset.stats.decode_ms = input.decode_ms;
@@ -459,7 +466,13 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   }
   asset.tau = level_taus.front();
 
-  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld)};
+  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), std::nullopt};
+  if (asset.tile) {
+    const Vec2 a = asset.transform.apply({0.0, 0.0});
+    const Vec2 b = asset.transform.apply({double(input.width), double(input.height)});
+    limits.keep_inside = EngineLimits::Box{{std::min(a.x, b.x), std::min(a.y, b.y)},
+                                           {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  }
   auto split = [&](const Region& component, double tau) {
     DecomposeSettings finer = decompose_settings;
     finer.tau = tau;

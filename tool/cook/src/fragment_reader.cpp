@@ -102,6 +102,7 @@ CookedAsset decode_asset(Decoder& in) {
   const auto flags = in.raw<std::uint32_t>("asset flags");
   if (flags & ~format::kFragmentKnownFlags) in.fail("unknown asset flags");
   asset.transform.flip_y = (flags & format::kFragmentFlipY) != 0;
+  asset.tile = (flags & format::kFragmentTile) != 0;
   asset.tau = in.f64("tau");
   if (!(asset.tau >= 0)) in.fail("a negative tau");
   asset.measure = in.string("measure");

@@ -77,6 +77,7 @@ void encode_asset(Encoder& out, const CookedAsset& asset) {
   if (asset.transform.flip_y) flags |= format::kFragmentFlipY;
   if (asset.physics) flags |= format::kFragmentHasPhysics;
   if (asset.quantization_error) flags |= format::kFragmentHasQuantizationError;
+  if (asset.tile) flags |= format::kFragmentTile;
   out.raw(flags);
   out.f64(asset.tau);
   out.string(asset.measure);
@@ -150,7 +151,8 @@ std::string settings_text(const Settings& settings) {
     const Grid& grid = *settings.grid;
     line("grid", std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) +
                      " margin " + std::to_string(grid.margin) + " spacing " +
-                     std::to_string(grid.spacing));
+                     std::to_string(grid.spacing) +
+                     (grid.tile_snap ? " tile snap " + exact(*grid.tile_snap) : ""));
   } else {
     line("grid", "none");
   }

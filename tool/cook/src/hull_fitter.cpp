@@ -391,7 +391,8 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
     if (denominator > 0) {
       double t = cross(c - a, second) / denominator;
       Vec2 apex = a + first * t;
-      bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t);
+      bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t) &&
+                   (!limits_.keep_inside || limits_.keep_inside->holds(apex));
       double at_apex = ahead ? reach_.distance(apex, bound_) : bound_ + 1;
       // Distance is 1-Lipschitz: a segment whose ends' distances and half its length stay within
       // bound needs no closer look.

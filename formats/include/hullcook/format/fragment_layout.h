@@ -24,8 +24,9 @@ inline constexpr std::size_t kToolVersionSize = 32;
 inline constexpr std::uint32_t kFragmentFlipY = 1u << 0;
 inline constexpr std::uint32_t kFragmentHasPhysics = 1u << 1;
 inline constexpr std::uint32_t kFragmentHasQuantizationError = 1u << 2;
+inline constexpr std::uint32_t kFragmentTile = 1u << 3;
 inline constexpr std::uint32_t kFragmentKnownFlags =
-    kFragmentFlipY | kFragmentHasPhysics | kFragmentHasQuantizationError;
+    kFragmentFlipY | kFragmentHasPhysics | kFragmentHasQuantizationError | kFragmentTile;
 // Physics flags in the payload.
 inline constexpr std::uint32_t kFragmentSensor = 1u << 0;
 

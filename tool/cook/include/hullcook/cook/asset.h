@@ -80,6 +80,9 @@ struct CookedAsset {
   std::vector<CookedLevel> levels;  // finest first; levels[0] holds the pieces' hulls
   std::optional<PhysicsProperties> physics;
   std::optional<double> quantization_error;  // [output units] when read back from a bundle
+  // A --tile cell: the bundle quantizes it on a grid of half pixels divided by a power of two,
+  // so that its cell's borders (hulls snapped onto them) are stored exactly.
+  bool tile = false;
   std::vector<std::string> warnings;
   CookedStats stats;
 };

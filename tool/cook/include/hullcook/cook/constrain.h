@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,7 +16,17 @@ namespace hullcook {
 struct EngineLimits {
   std::size_t max_verts = 8;  // per hull; 0 = unlimited
   double weld = 0.005;        // [output units] minimum distance between two hull vertices; 0: none
+  // --tile: every hull point lies in this box [output units] (the cell), but for rounding
+  // (kOutsideBoxFraction of its size): a hull grown past a tile's border is a bump at its seam.
+  struct Box {
+    Vec2 low, high;
+    bool holds(Vec2 p) const;
+  };
+  std::optional<Box> keep_inside = std::nullopt;
 };
+
+// How far, as a fraction of the box's larger side, a hull point may lie outside keep_inside.
+inline constexpr double kOutsideBoxFraction = 1e-9;
 
 // A vertex is collinear with its neighbours (and removed) when it is closer than this fraction
 // of the weld distance to the line through them: engines computing hulls in float must see a

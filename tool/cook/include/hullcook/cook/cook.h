@@ -35,6 +35,9 @@ struct Grid {
   int cell_width = 0, cell_height = 0;  // [px]
   int margin = 0;                       // [px] before the first row and column
   int spacing = 0;                      // [px] between cells
+  // --tile [--snap PX]: each cell's shape stays inside the cell, and outline points this near
+  // its border lie exactly on it, so that neighbouring solid tiles meet without seams or bumps.
+  std::optional<double> tile_snap;  // [px]
 
   // The cell size: "64x32", or "64" for a square. Throws UsageError.
   static Grid parse(const std::string& text);
