@@ -6,6 +6,7 @@
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
+#include "markup.h"
 
 #include <glm/common.hpp>
 
@@ -90,11 +91,10 @@ std::string base64(const std::string& bytes) {
 
 class Preview {
  public:
-  Preview(const std::filesystem::path& image, const CookedAsset& asset) : asset_(asset) {
+  Preview(RgbaImage sprite, const CookedAsset& asset) : asset_(asset), sprite_(std::move(sprite)) {
     mapping_.transform = asset.transform;
     if (!(mapping_.transform.scale > 0)) mapping_.transform.scale = 1;
-    if (!image.empty()) {
-      sprite_ = load_rgba(image, std::numeric_limits<std::uint64_t>::max());
+    if (!sprite_.rgba.empty()) {
       width_ = sprite_.width;
       height_ = sprite_.height;
       int long_side = std::max({sprite_.width, sprite_.height, 1});
@@ -145,7 +145,8 @@ class Preview {
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << canvas_width_ << "\" height=\""
         << canvas_height_ << "\" viewBox=\"0 0 " << canvas_width_ << ' ' << canvas_height_
         << "\">\n"
-        << "<title>" << escaped(asset_.name.empty() ? asset_.source : asset_.name) << "</title>\n"
+        << "<title>" << markup_escaped(asset_.name.empty() ? asset_.source : asset_.name)
+        << "</title>\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     if (!sprite_.rgba.empty()) {
       out << "<image x=\"" << kMargin << "\" y=\"" << kMargin << "\" width=\""
@@ -154,18 +155,18 @@ class Preview {
              "href=\"data:image/png;base64,"
           << base64(encode_png(sprite_.rgba.data(), sprite_.width, sprite_.height, 4)) << "\"/>\n";
     }
-    out << "<g id=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
+    out << "<g class=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
       std::string colour = hex(piece_colour(i));
       out << "<path fill=\"" << colour << "\" stroke=\"" << colour << "\" d=\""
           << path({asset_.pieces[i].hull}) << "\"/>\n";
     }
-    out << "</g>\n<g id=\"components\" fill=\"none\" stroke=\"" << hex(kComponentColour)
+    out << "</g>\n<g class=\"components\" fill=\"none\" stroke=\"" << hex(kComponentColour)
         << "\" stroke-width=\"1\">\n";
     for (const CookedPiece& piece : asset_.pieces) {
       out << "<path d=\"" << path(rings_of(piece.component)) << "\"/>\n";
     }
-    out << "</g>\n<g id=\"outline\" fill=\"none\" stroke=\"" << hex(kOutlineColour)
+    out << "</g>\n<g class=\"outline\" fill=\"none\" stroke=\"" << hex(kOutlineColour)
         << "\" stroke-width=\"2\">\n";
     for (const Region& region : asset_.regions)
       out << "<path d=\"" << path(rings_of(region)) << "\"/>\n";
@@ -196,21 +197,6 @@ class Preview {
     return d;
   }
 
-  static std::string escaped(const std::string& text) {
-    std::string result;
-    for (char c : text) {
-      if (c == '<')
-        result += "&lt;";
-      else if (c == '>')
-        result += "&gt;";
-      else if (c == '&')
-        result += "&amp;";
-      else
-        result += c;
-    }
-    return result;
-  }
-
   // The sprite scaled by an integer factor (nearest neighbour) over a checkerboard, washed out so
   // that the drawing stands out.
   void draw_sprite(Canvas& canvas) const {
@@ -235,8 +221,8 @@ class Preview {
   }
 
   const CookedAsset& asset_;
-  CanvasMapping mapping_;
   RgbaImage sprite_;
+  CanvasMapping mapping_;
   double width_ = 0, height_ = 0;  // [px] of the frame
   int canvas_width_ = 0, canvas_height_ = 0;
 };
@@ -256,8 +242,14 @@ void render_preview(const std::filesystem::path& image, const CookedAsset& asset
   if (extension != ".png" && extension != ".svg") {
     throw UsageError(out.string() + ": a preview is written as .png or .svg");
   }
-  Preview preview(image, asset);
+  RgbaImage sprite;
+  if (!image.empty()) sprite = load_rgba(image, std::numeric_limits<std::uint64_t>::max());
+  Preview preview(std::move(sprite), asset);
   write_file_atomically(out, extension == ".png" ? preview.png() : preview.svg());
+}
+
+std::string preview_svg(RgbaImage sprite, const CookedAsset& asset) {
+  return Preview(std::move(sprite), asset).svg();
 }
 
 }  // namespace hullcook
