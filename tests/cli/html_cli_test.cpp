@@ -155,6 +155,27 @@ TEST_F(HtmlCli, ASheetFrameIsDrawnUprightInItsUntrimmedFrame) {
   EXPECT_EQ(frame, alone);
 }
 
+TEST_F(HtmlCli, AColourKeyIsDrawnTransparent) {
+  // The same L on magenta: in an RGB image keyed with --color-key, and in an RGBA image whose
+  // magenta is transparent. The cook traces both alike, and the page draws both alike.
+  std::vector<std::uint8_t> rgb, rgba;
+  for (int y = 0; y < 10; ++y) {
+    for (int x = 0; x < 10; ++x) {
+      const bool opaque = l_shape(x, y, 0);
+      const auto c = opaque ? colour(x, y, 0) : std::array<std::uint8_t, 4>{255, 0, 255, 0};
+      rgb.insert(rgb.end(), c.begin(), c.begin() + 3);
+      rgba.insert(rgba.end(), c.begin(), c.end());
+    }
+  }
+  write("keyed.png", test::make_png(10, 10, 2, rgb));
+  write("alpha.png", test::make_png(10, 10, 6, rgba));
+  const std::string keyed =
+      only_svg(cook_html((directory / "keyed.png").string() + " --color-key '#ff00ff'"));
+  const std::string alpha = only_svg(cook_html((directory / "alpha.png").string()));
+  ASSERT_NE(alpha.find("data:image/png;base64,"), std::string::npos);
+  EXPECT_EQ(keyed, alpha);
+}
+
 TEST_F(HtmlCli, NamesAreEscaped) {
   fs::create_directories(directory / "in");
   write("in/a<b>&\"c'.png", sprite_png(10, 10, 0, [](int x, int y) { return l_shape(x, y, 0); }));

@@ -6,6 +6,8 @@
 #include "hullcook/trace/trace.h"
 #include "markup.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -69,7 +71,8 @@ std::string formatted(const char* format, double value) {
 }
 
 // The sprite's pixels as the cook traced them: its frame, transparent but for the cutout, turned
-// back upright. The images are read again, so one changed since the cook is refused.
+// back upright, its colour key transparent. The images are read again, so one changed since the
+// cook is refused.
 class SpriteReader {
  public:
   RgbaImage sprite(const CookedAsset& asset) {
@@ -106,6 +109,12 @@ class SpriteReader {
                                 4],
                     &image_.rgba[(static_cast<std::size_t>(image_y) * image_.width + image_x) * 4],
                     4);
+      }
+    }
+    if (cutout.color_key) {
+      const std::array<std::uint8_t, 3>& key = *cutout.color_key;
+      for (std::size_t i = 0; i < frame.rgba.size(); i += 4) {
+        if (std::equal(key.begin(), key.end(), frame.rgba.begin() + i)) frame.rgba[i + 3] = 0;
       }
     }
     return frame;

@@ -4,6 +4,7 @@
 
 #include "hullcook/core/polygon.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -74,6 +75,7 @@ struct SpriteCutout {
   int width = 0, height = 0;       // [px] the sprite upright (stored height wide when rotated)
   bool rotated = false;            // stored turned 90° clockwise
   int offset_x = 0, offset_y = 0;  // [px] the sprite's top left in the asset's frame
+  std::optional<std::array<std::uint8_t, 3>> color_key;  // RGB traced as transparent (--color-key)
 };
 
 struct CookedAsset {
