@@ -5,11 +5,14 @@
 #include "run_command.h"
 #include "test_directory.h"
 
+#include "hullcook/trace/trace.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -50,25 +53,6 @@ bool l_shape(int x, int y, int salt) {
          (x >= 1 + salt && x < 9 && y >= 6 && y < 9);
 }
 
-class HtmlCli : public test::TestDirectory {
- protected:
-  HtmlCli() : TestDirectory("hullcook_html_cli_") {}
-
-  void write(const std::string& name, const std::string& bytes) {
-    std::ofstream(directory / name, std::ios::binary) << bytes;
-  }
-
-  // The page of cooking arguments (with -o and --html into the test's directory).
-  std::string cook_html(const std::string& arguments) {
-    const fs::path page = directory / "report.html";
-    fs::remove(page);
-    const auto result = run_hullcook("cook " + arguments + " -q -o " +
-                                     (directory / "out.hcb").string() + " --html " + page.string());
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    return read_bytes(page);
-  }
-};
-
 // text without what stands between each start and the end after it (std::regex, in GCC 12's
 // sanitizer build, does not compile warning-free).
 std::string without_between(std::string text, const std::string& start, const std::string& end) {
@@ -79,6 +63,28 @@ std::string without_between(std::string text, const std::string& start, const st
     text.erase(at, stop - at);
   }
   return text;
+}
+
+// The bytes of the PNG an SVG embeds as a data: URI; empty if none.
+std::string sprite_bytes(const std::string& svg) {
+  const std::string prefix = "href=\"data:image/png;base64,";
+  const std::size_t start = svg.find(prefix);
+  if (start == std::string::npos) return {};
+  std::string bytes;
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (std::size_t i = start + prefix.size(); i < svg.size() && svg[i] != '"' && svg[i] != '=';
+       ++i) {
+    static const std::string kAlphabet =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    bits = bits << 6 | static_cast<std::uint32_t>(kAlphabet.find(svg[i]));
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      bytes.push_back(static_cast<char>((bits >> count) & 0xFF));
+    }
+  }
+  return bytes;
 }
 
 // The SVG in the card of the asset named (escaped as in the page), its <title> (the name) left
@@ -99,6 +105,43 @@ std::string only_svg(const std::string& page) {
   const std::size_t start = name + 11;
   return card_svg(page, page.substr(start, page.find('"', start) - start));
 }
+
+class HtmlCli : public test::TestDirectory {
+ protected:
+  HtmlCli() : TestDirectory("hullcook_html_cli_") {}
+
+  void write(const std::string& name, const std::string& bytes) {
+    std::ofstream(directory / name, std::ios::binary) << bytes;
+  }
+
+  // The page of cooking arguments (with -o and --html into the test's directory).
+  std::string cook_html(const std::string& arguments) {
+    const fs::path page = directory / "report.html";
+    fs::remove(page);
+    const auto result = run_hullcook("cook " + arguments + " -q -o " +
+                                     (directory / "out.hcb").string() + " --html " + page.string());
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return read_bytes(page);
+  }
+
+  // The sprite an SVG of the page embeds, decoded.
+  RgbaImage sprite_of(const std::string& svg) {
+    write("sprite.png", sprite_bytes(svg));
+    return load_rgba(directory / "sprite.png", 1 << 20);
+  }
+
+  // Two drawings of one asset: the same SVG but for the sprite's bytes, and the same sprite
+  // pixels (one may be a PNG file's own bytes, the other re-encoded).
+  void expect_same_drawing(const std::string& svg, const std::string& expected) {
+    ASSERT_FALSE(sprite_bytes(expected).empty());
+    ASSERT_FALSE(sprite_bytes(svg).empty());
+    EXPECT_EQ(without_between(svg, "href=\"", "\""), without_between(expected, "href=\"", "\""));
+    const RgbaImage sprite = sprite_of(svg), wanted = sprite_of(expected);
+    EXPECT_EQ(sprite.width, wanted.width);
+    EXPECT_EQ(sprite.height, wanted.height);
+    EXPECT_TRUE(sprite.rgba == wanted.rgba) << "the sprites' pixels differ";
+  }
+};
 
 TEST_F(HtmlCli, GridCellsDrawTheirOwnPixels) {
   // A 2 x 2 grid of 10 px cells; cell 1 is empty (no asset, no card).
@@ -123,9 +166,7 @@ TEST_F(HtmlCli, GridCellsDrawTheirOwnPixels) {
     }
     write("cell.png", test::make_png(kCell, kCell, 6, pixels));
     const std::string alone = only_svg(cook_html((directory / "cell.png").string()));
-    const std::string cell = card_svg(page, "tiles.png/" + std::to_string(index));
-    ASSERT_NE(alone.find("data:image/png;base64,"), std::string::npos);
-    EXPECT_EQ(cell, alone);
+    expect_same_drawing(card_svg(page, "tiles.png/" + std::to_string(index)), alone);
   }
   EXPECT_EQ(page.find("data-name=\"tiles.png/1\""), std::string::npos);
   EXPECT_NE(card_svg(page, "tiles.png/0"), card_svg(page, "tiles.png/3"));
@@ -162,8 +203,7 @@ TEST_F(HtmlCli, ASheetFrameIsDrawnUprightInItsUntrimmedFrame) {
   write("sheet.json", sheet.dump());
   const std::string frame = card_svg(cook_html((directory / "sheet.json").string()), "sheet/hero");
   const std::string alone = only_svg(cook_html((directory / "frame.png").string()));
-  ASSERT_NE(alone.find("data:image/png;base64,"), std::string::npos);
-  EXPECT_EQ(frame, alone);
+  expect_same_drawing(frame, alone);
 }
 
 TEST_F(HtmlCli, AColourKeyIsDrawnTransparent) {
@@ -183,8 +223,14 @@ TEST_F(HtmlCli, AColourKeyIsDrawnTransparent) {
   const std::string keyed =
       only_svg(cook_html((directory / "keyed.png").string() + " --color-key '#ff00ff'"));
   const std::string alpha = only_svg(cook_html((directory / "alpha.png").string()));
-  ASSERT_NE(alpha.find("data:image/png;base64,"), std::string::npos);
-  EXPECT_EQ(keyed, alpha);
+  expect_same_drawing(keyed, alpha);
+}
+
+TEST_F(HtmlCli, AWholePngIsEmbeddedAsItsOwnBytes) {
+  const fs::path sprite =
+      fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites/pingus__traps__spike.png";
+  const std::string svg = only_svg(cook_html(sprite.string()));
+  EXPECT_TRUE(sprite_bytes(svg) == read_bytes(sprite)) << "not the file's bytes";
 }
 
 TEST_F(HtmlCli, NamesAreEscaped) {

@@ -11,9 +11,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 namespace hullcook {
 namespace {
@@ -75,6 +79,45 @@ std::string formatted(const char* format, double value) {
 // cook is refused.
 class SpriteReader {
  public:
+  // The asset's preview SVG: a whole PNG image embedded as its own bytes (neither decoded nor
+  // encoded again: a browser draws PNG as libpng does), any other sprite cut out and encoded.
+  std::string svg(const CookedAsset& asset) {
+    if (std::optional<std::string> uri = own_png(asset)) {
+      return preview_svg_embedding(std::move(*uri), asset);
+    }
+    return preview_svg(sprite(asset), asset);
+  }
+
+ private:
+  // The data: URI of the asset's image file when it is a PNG that is the whole sprite, as it was
+  // when cooked (same size) and without a colour key to apply.
+  static std::optional<std::string> own_png(const CookedAsset& asset) {
+    const SpriteCutout& cutout = asset.cutout;
+    const bool whole = !cutout.image.empty() && !cutout.color_key && !cutout.rotated &&
+                       cutout.x == 0 && cutout.y == 0 && cutout.offset_x == 0 &&
+                       cutout.offset_y == 0 && cutout.width == asset.image_width &&
+                       cutout.height == asset.image_height;
+    if (!whole) return std::nullopt;
+    std::ifstream stream(cutout.image, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(stream),
+                            std::istreambuf_iterator<char>()};
+    // The signature, then IHDR's length, type, width and height (big-endian).
+    static constexpr std::string_view kSignature{"\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16};
+    if (bytes.size() < 24 || std::string_view(bytes).substr(0, 16) != kSignature) {
+      return std::nullopt;
+    }
+    auto big_endian = [&](std::size_t at) {
+      std::uint32_t value = 0;
+      for (std::size_t i = 0; i < 4; ++i) value = value << 8 | std::uint8_t(bytes[at + i]);
+      return value;
+    };
+    if (big_endian(16) != static_cast<std::uint32_t>(asset.image_width) ||
+        big_endian(20) != static_cast<std::uint32_t>(asset.image_height)) {
+      return std::nullopt;  // changed since the cook: sprite() says so
+    }
+    return "data:image/png;base64," + base64(bytes);
+  }
+
   RgbaImage sprite(const CookedAsset& asset) {
     const SpriteCutout& cutout = asset.cutout;
     if (cutout.image.empty()) return {};
@@ -120,7 +163,6 @@ class SpriteReader {
     return frame;
   }
 
- private:
   std::string path_;  // the image in image_: assets of one sheet or grid come one after another
   RgbaImage image_;
 };
@@ -141,7 +183,7 @@ void write_card(std::ostream& out, std::size_t index, const CookedAsset& asset,
       << "\" data-name=\"" << name << "\" data-pieces=\"" << asset.stats.pieces << "\" data-time=\""
       << formatted("%.3f", asset.stats.total_ms) << "\">\n"
       << "<h2>" << name << "</h2>\n"
-      << preview_svg(sprites.sprite(asset), asset) << "<dl>\n"
+      << sprites.svg(asset) << "<dl>\n"
       << "<dt>vertices traced</dt><dd class=\"vertices-traced\">" << asset.stats.traced_vertices
       << "</dd>\n"
       << "<dt>pieces</dt><dd class=\"pieces\">" << asset.stats.pieces << "</dd>\n"

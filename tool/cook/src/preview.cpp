@@ -73,28 +73,19 @@ std::string hex(const Colour& rgb) {
   return text;
 }
 
-std::string base64(const std::string& bytes) {
-  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(std::uint8_t(bytes[i])); };
-  std::string text;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    std::uint32_t chunk = byte(i) << 16;
-    if (i + 1 < bytes.size()) chunk |= byte(i + 1) << 8;
-    if (i + 2 < bytes.size()) chunk |= byte(i + 2);
-    text += alphabet[(chunk >> 18) & 63];
-    text += alphabet[(chunk >> 12) & 63];
-    text += i + 1 < bytes.size() ? alphabet[(chunk >> 6) & 63] : '=';
-    text += i + 2 < bytes.size() ? alphabet[chunk & 63] : '=';
-  }
-  return text;
-}
-
 class Preview {
  public:
-  Preview(RgbaImage sprite, const CookedAsset& asset) : asset_(asset), sprite_(std::move(sprite)) {
+  // sprite_uri: the sprite as svg() embeds it, when given (then sprite holds no pixels and the
+  // image is the asset's image_width x image_height).
+  Preview(RgbaImage sprite, const CookedAsset& asset, std::string sprite_uri = {})
+      : asset_(asset), sprite_(std::move(sprite)), sprite_uri_(std::move(sprite_uri)) {
     mapping_.transform = asset.transform;
     if (!(mapping_.transform.scale > 0)) mapping_.transform.scale = 1;
-    if (!sprite_.rgba.empty()) {
+    if (!sprite_uri_.empty()) {
+      sprite_.width = asset.image_width;
+      sprite_.height = asset.image_height;
+    }
+    if (has_sprite()) {
       width_ = sprite_.width;
       height_ = sprite_.height;
       int long_side = std::max({sprite_.width, sprite_.height, 1});
@@ -148,12 +139,12 @@ class Preview {
         << "<title>" << markup_escaped(asset_.name.empty() ? asset_.source : asset_.name)
         << "</title>\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    if (!sprite_.rgba.empty()) {
+    if (has_sprite()) {
       out << "<image x=\"" << kMargin << "\" y=\"" << kMargin << "\" width=\""
           << width_ * mapping_.factor << "\" height=\"" << height_ * mapping_.factor
           << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" opacity=\"0.6\" "
-             "href=\"data:image/png;base64,"
-          << base64(encode_png(sprite_.rgba.data(), sprite_.width, sprite_.height, 4)) << "\"/>\n";
+             "href=\""
+          << (sprite_uri_.empty() ? png_uri(sprite_) : sprite_uri_) << "\"/>\n";
     }
     out << "<g class=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
@@ -175,6 +166,13 @@ class Preview {
   }
 
  private:
+  bool has_sprite() const { return !sprite_.rgba.empty() || !sprite_uri_.empty(); }
+
+  static std::string png_uri(const RgbaImage& image) {
+    return "data:image/png;base64," +
+           base64(encode_png(image.rgba.data(), image.width, image.height, 4));
+  }
+
   Ring points(const Ring& ring) const {
     Ring result;
     result.reserve(ring.size());
@@ -222,6 +220,7 @@ class Preview {
 
   const CookedAsset& asset_;
   RgbaImage sprite_;
+  std::string sprite_uri_;
   CanvasMapping mapping_;
   double width_ = 0, height_ = 0;  // [px] of the frame
   int canvas_width_ = 0, canvas_height_ = 0;
@@ -250,6 +249,10 @@ void render_preview(const std::filesystem::path& image, const CookedAsset& asset
 
 std::string preview_svg(RgbaImage sprite, const CookedAsset& asset) {
   return Preview(std::move(sprite), asset).svg();
+}
+
+std::string preview_svg_embedding(std::string sprite_uri, const CookedAsset& asset) {
+  return Preview(RgbaImage{}, asset, std::move(sprite_uri)).svg();
 }
 
 }  // namespace hullcook

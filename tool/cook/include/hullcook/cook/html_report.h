@@ -8,8 +8,9 @@
 namespace hullcook {
 
 // A self-contained HTML page (nothing loaded from elsewhere): one card per asset, in the result's
-// order, each with the sprite as the cook saw it (its --grid cell or sheet frame, re-read from
-// asset.cutout and embedded as a PNG data: URI) under its traced outline, cuts and hulls (the
+// order, each with the sprite as the cook saw it (re-read from asset.cutout: a whole PNG file
+// embedded as its own bytes, a --grid cell, a sheet frame, a colour-keyed or TGA, BMP or WebP
+// image decoded and encoded as PNG, in a data: URI) under its traced outline, cuts and hulls (the
 // preview's inline SVG), and its figures: vertices traced, pieces, hulls, hull vertices, τ, the
 // max concavity measured and the milliseconds it took. An inline script sorts the cards by
 // name, pieces or time, as the address's hash says (#sort=name|pieces|time; the page's links set

@@ -30,6 +30,10 @@ void render_preview(const std::filesystem::path& image, const CookedAsset& asset
 // can share a page.
 std::string preview_svg(RgbaImage sprite, const CookedAsset& asset);
 
+// preview_svg with the sprite already a data: URI of an image of the asset's image_width x
+// image_height px (a PNG file's own bytes, say), which the SVG embeds as it is.
+std::string preview_svg_embedding(std::string sprite_uri, const CookedAsset& asset);
+
 // [px] the smallest long side of a preview; smaller sprites are scaled up by an integer factor.
 inline constexpr int kPreviewMinSize = 512;
 
