@@ -7,6 +7,7 @@
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/depfile.h"
+#include "hullcook/cook/html_report.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
@@ -27,6 +28,7 @@ struct CookCommand {
   std::string name;
   std::string depfile;
   std::string report;
+  std::string html;
   bool quiet = false;
   Settings settings;
   CookOptions options;
@@ -99,6 +101,10 @@ void add_cook(CLI::App& root, CommandAction& action) {
                   "(images, physics sidecars) and directory searched");
   app->add_option("--report", command->report,
                   "Also write per-asset figures here as JSON (vertices, pieces, hulls, bytes, ms)");
+  app->add_option("--html", command->html,
+                  "Also write a page here to look at (offline): each asset's sprite, outline and "
+                  "hulls with its figures, sortable by pieces or time. Its times differ from run "
+                  "to run; the rest of its bytes do not");
   auto* draco =
       app->add_flag("--draco", command->settings.draco, "Compress glTF meshes with Draco");
   app->add_flag("--meshopt", command->settings.meshopt,
@@ -116,10 +122,10 @@ void add_cook(CLI::App& root, CommandAction& action) {
       std::vector<std::filesystem::path> inputs(command->inputs.begin(), command->inputs.end());
       for (const std::filesystem::path& output : outputs) check_not_an_input(output, inputs);
       if (!command->name.empty() || app->count("--name") > 0) check_asset_name(*command, inputs);
-      check_side_outputs(command->depfile, command->report, outputs, inputs);
-      // Only the debug JSON and fragments (which link may turn into JSON) keep the outlines:
-      // without them they are freed asset by asset.
-      command->settings.keep_outlines = false;
+      check_side_outputs(command->depfile, command->report, outputs, inputs, command->html);
+      // Only the debug JSON, fragments (which link may turn into JSON) and the HTML page keep
+      // the outlines: without them they are freed asset by asset.
+      command->settings.keep_outlines = !command->html.empty();
       for (const std::filesystem::path& output : outputs) {
         if (output.extension() == ".json" || output.extension() == ".hcf") {
           command->settings.keep_outlines = true;
@@ -128,7 +134,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
       // A bundle is written as the cook goes (issue 19: the memory of 10,000 assets is that of
       // 100); the hulls stay in memory only when another output needs them.
       std::unique_ptr<BundleStream> stream;
-      bool hulls_needed = !command->report.empty();
+      bool hulls_needed = !command->report.empty() || !command->html.empty();
       for (const std::filesystem::path& output : outputs) {
         if (output.extension() != ".hcb")
           hulls_needed = true;
@@ -151,6 +157,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
             {command->depfile, depfile_text(outputs, cook_dependencies(result, inputs))});
       }
       if (!command->report.empty()) files.push_back({command->report, cook_report(result, true)});
+      if (!command->html.empty()) files.push_back({command->html, html_report(result)});
       write_files_atomically(files);
       progress.finish();
       if (!command->quiet) print_summary(result);

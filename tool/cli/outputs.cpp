@@ -52,7 +52,7 @@ void check_side_output(const std::string& option, const std::filesystem::path& p
 
 void check_side_outputs(const std::string& depfile, const std::string& report,
                         std::vector<std::filesystem::path> outputs,
-                        const std::vector<std::filesystem::path>& inputs) {
+                        const std::vector<std::filesystem::path>& inputs, const std::string& html) {
   if (!depfile.empty()) {
     check_side_output("--depfile", depfile, outputs, inputs);
     outputs.emplace_back(depfile);
@@ -62,6 +62,14 @@ void check_side_outputs(const std::string& depfile, const std::string& report,
       throw UsageError("--report " + report + ": the report is written as .json");
     }
     check_side_output("--report", report, outputs, inputs);
+    outputs.emplace_back(report);
+  }
+  if (!html.empty()) {
+    const std::filesystem::path extension = std::filesystem::path(html).extension();
+    if (extension != ".html" && extension != ".htm") {
+      throw UsageError("--html " + html + ": the page is written as .html");
+    }
+    check_side_output("--html", html, outputs, inputs);
   }
 }
 

@@ -15,10 +15,12 @@ std::vector<std::filesystem::path> checked_outputs(const std::string& command,
                                                    const std::string& output,
                                                    const std::string& json);
 
-// Refuses before any work a --depfile or a --report (either may be empty: not asked for) that
-// cannot be written, a report not .json, or either naming another file written or read.
+// Refuses before any work a --depfile, a --report or an --html page (each may be empty: not
+// asked for) that cannot be written, a report not .json, a page not .html, or one naming another
+// file written or read.
 void check_side_outputs(const std::string& depfile, const std::string& report,
                         std::vector<std::filesystem::path> outputs,
-                        const std::vector<std::filesystem::path>& inputs);
+                        const std::vector<std::filesystem::path>& inputs,
+                        const std::string& html = {});
 
 }  // namespace hullcook::cli

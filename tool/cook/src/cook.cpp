@@ -357,6 +357,26 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
   return prepared;
 }
 
+SpriteCutout cutout_of(const InputFile& file, int width, int height, const Settings& settings) {
+  if (is_poly_file(file.path)) return {};
+  if (file.frames) {
+    const SheetFrame& frame = file.frames->frames[file.frame];
+    return {file.frames->image.generic_string(),
+            frame.atlas.x,
+            frame.atlas.y,
+            frame.trimmed_width,
+            frame.trimmed_height,
+            frame.rotated,
+            frame.offset_x,
+            frame.offset_y,
+            settings.color_key};
+  }
+  if (file.sheet) {
+    return {file.path, file.cell.x, file.cell.y, width, height, false, 0, 0, settings.color_key};
+  }
+  return {file.path, 0, 0, width, height, false, 0, 0, settings.color_key};
+}
+
 PreparedInput prepare_polygons(const InputFile& file, const Settings& settings) {
   PreparedInput prepared;
   prepared.regions = read_poly_file(file.path);
@@ -414,6 +434,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.source = std::filesystem::path(file.path).generic_string();
   asset.image_width = input.width;
   asset.image_height = input.height;
+  asset.cutout = cutout_of(file, input.width, input.height, settings);
   asset.pixels_per_unit = settings.pixels_per_unit;
   asset.pivot = pivot_of(file, settings);
   asset.transform = input.transform;

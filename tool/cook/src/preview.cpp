@@ -6,6 +6,7 @@
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
+#include "markup.h"
 
 #include <glm/common.hpp>
 
@@ -72,29 +73,19 @@ std::string hex(const Colour& rgb) {
   return text;
 }
 
-std::string base64(const std::string& bytes) {
-  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(std::uint8_t(bytes[i])); };
-  std::string text;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    std::uint32_t chunk = byte(i) << 16;
-    if (i + 1 < bytes.size()) chunk |= byte(i + 1) << 8;
-    if (i + 2 < bytes.size()) chunk |= byte(i + 2);
-    text += alphabet[(chunk >> 18) & 63];
-    text += alphabet[(chunk >> 12) & 63];
-    text += i + 1 < bytes.size() ? alphabet[(chunk >> 6) & 63] : '=';
-    text += i + 2 < bytes.size() ? alphabet[chunk & 63] : '=';
-  }
-  return text;
-}
-
 class Preview {
  public:
-  Preview(const std::filesystem::path& image, const CookedAsset& asset) : asset_(asset) {
+  // sprite_uri: the sprite as svg() embeds it, when given (then sprite holds no pixels and the
+  // image is the asset's image_width x image_height).
+  Preview(RgbaImage sprite, const CookedAsset& asset, std::string sprite_uri = {})
+      : asset_(asset), sprite_(std::move(sprite)), sprite_uri_(std::move(sprite_uri)) {
     mapping_.transform = asset.transform;
     if (!(mapping_.transform.scale > 0)) mapping_.transform.scale = 1;
-    if (!image.empty()) {
-      sprite_ = load_rgba(image, std::numeric_limits<std::uint64_t>::max());
+    if (!sprite_uri_.empty()) {
+      sprite_.width = asset.image_width;
+      sprite_.height = asset.image_height;
+    }
+    if (has_sprite()) {
       width_ = sprite_.width;
       height_ = sprite_.height;
       int long_side = std::max({sprite_.width, sprite_.height, 1});
@@ -145,27 +136,28 @@ class Preview {
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << canvas_width_ << "\" height=\""
         << canvas_height_ << "\" viewBox=\"0 0 " << canvas_width_ << ' ' << canvas_height_
         << "\">\n"
-        << "<title>" << escaped(asset_.name.empty() ? asset_.source : asset_.name) << "</title>\n"
+        << "<title>" << markup_escaped(asset_.name.empty() ? asset_.source : asset_.name)
+        << "</title>\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    if (!sprite_.rgba.empty()) {
+    if (has_sprite()) {
       out << "<image x=\"" << kMargin << "\" y=\"" << kMargin << "\" width=\""
           << width_ * mapping_.factor << "\" height=\"" << height_ * mapping_.factor
           << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" opacity=\"0.6\" "
-             "href=\"data:image/png;base64,"
-          << base64(encode_png(sprite_.rgba.data(), sprite_.width, sprite_.height, 4)) << "\"/>\n";
+             "href=\""
+          << (sprite_uri_.empty() ? png_uri(sprite_) : sprite_uri_) << "\"/>\n";
     }
-    out << "<g id=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
+    out << "<g class=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
       std::string colour = hex(piece_colour(i));
       out << "<path fill=\"" << colour << "\" stroke=\"" << colour << "\" d=\""
           << path({asset_.pieces[i].hull}) << "\"/>\n";
     }
-    out << "</g>\n<g id=\"components\" fill=\"none\" stroke=\"" << hex(kComponentColour)
+    out << "</g>\n<g class=\"components\" fill=\"none\" stroke=\"" << hex(kComponentColour)
         << "\" stroke-width=\"1\">\n";
     for (const CookedPiece& piece : asset_.pieces) {
       out << "<path d=\"" << path(rings_of(piece.component)) << "\"/>\n";
     }
-    out << "</g>\n<g id=\"outline\" fill=\"none\" stroke=\"" << hex(kOutlineColour)
+    out << "</g>\n<g class=\"outline\" fill=\"none\" stroke=\"" << hex(kOutlineColour)
         << "\" stroke-width=\"2\">\n";
     for (const Region& region : asset_.regions)
       out << "<path d=\"" << path(rings_of(region)) << "\"/>\n";
@@ -174,6 +166,13 @@ class Preview {
   }
 
  private:
+  bool has_sprite() const { return !sprite_.rgba.empty() || !sprite_uri_.empty(); }
+
+  static std::string png_uri(const RgbaImage& image) {
+    return "data:image/png;base64," +
+           base64(encode_png(image.rgba.data(), image.width, image.height, 4));
+  }
+
   Ring points(const Ring& ring) const {
     Ring result;
     result.reserve(ring.size());
@@ -194,21 +193,6 @@ class Preview {
     }
     if (!d.empty()) d.pop_back();
     return d;
-  }
-
-  static std::string escaped(const std::string& text) {
-    std::string result;
-    for (char c : text) {
-      if (c == '<')
-        result += "&lt;";
-      else if (c == '>')
-        result += "&gt;";
-      else if (c == '&')
-        result += "&amp;";
-      else
-        result += c;
-    }
-    return result;
   }
 
   // The sprite scaled by an integer factor (nearest neighbour) over a checkerboard, washed out so
@@ -235,8 +219,9 @@ class Preview {
   }
 
   const CookedAsset& asset_;
-  CanvasMapping mapping_;
   RgbaImage sprite_;
+  std::string sprite_uri_;
+  CanvasMapping mapping_;
   double width_ = 0, height_ = 0;  // [px] of the frame
   int canvas_width_ = 0, canvas_height_ = 0;
 };
@@ -256,8 +241,18 @@ void render_preview(const std::filesystem::path& image, const CookedAsset& asset
   if (extension != ".png" && extension != ".svg") {
     throw UsageError(out.string() + ": a preview is written as .png or .svg");
   }
-  Preview preview(image, asset);
+  RgbaImage sprite;
+  if (!image.empty()) sprite = load_rgba(image, std::numeric_limits<std::uint64_t>::max());
+  Preview preview(std::move(sprite), asset);
   write_file_atomically(out, extension == ".png" ? preview.png() : preview.svg());
+}
+
+std::string preview_svg(RgbaImage sprite, const CookedAsset& asset) {
+  return Preview(std::move(sprite), asset).svg();
+}
+
+std::string preview_svg_embedding(std::string sprite_uri, const CookedAsset& asset) {
+  return Preview(RgbaImage{}, asset, std::move(sprite_uri)).svg();
 }
 
 }  // namespace hullcook

@@ -4,6 +4,7 @@
 
 #include "hullcook/core/polygon.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -65,11 +66,24 @@ struct CookedStats {
   double total_ms = 0.0;
 };
 
+// Where an asset's pixels lie in an image file, for drawing them (the HTML report): the whole
+// image, a --grid cell, or a sheet's frame (trimmed, maybe stored turned 90° clockwise, placed in
+// its untrimmed frame of image_width x image_height).
+struct SpriteCutout {
+  std::string image;               // the image file; empty for an asset read from a .poly file
+  int x = 0, y = 0;                // [px] the top left of the stored pixels in the image
+  int width = 0, height = 0;       // [px] the sprite upright (stored height wide when rotated)
+  bool rotated = false;            // stored turned 90° clockwise
+  int offset_x = 0, offset_y = 0;  // [px] the sprite's top left in the asset's frame
+  std::optional<std::array<std::uint8_t, 3>> color_key;  // RGB traced as transparent (--color-key)
+};
+
 struct CookedAsset {
   std::string name;      // path relative to the input root, '/'-separated
   std::string source;    // the file it came from, as given
   int image_width = 0;   // [px] 0 when the input is a polygon file
   int image_height = 0;  // [px]
+  SpriteCutout cutout;
   double pixels_per_unit = 1.0;
   Vec2 pivot{0.5, 0.5};  // normalised image coordinates of the output origin
   Transform transform;

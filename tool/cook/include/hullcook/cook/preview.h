@@ -2,8 +2,10 @@
 #pragma once
 
 #include "hullcook/cook/asset.h"
+#include "hullcook/trace/trace.h"
 
 #include <filesystem>
+#include <string>
 
 namespace hullcook {
 
@@ -21,6 +23,16 @@ namespace hullcook {
 // out cannot be written.
 void render_preview(const std::filesystem::path& image, const CookedAsset& asset,
                     const std::filesystem::path& out);
+
+// The SVG render_preview writes, of a sprite already decoded (empty: none, as for a .poly asset)
+// and cut to the asset's frame: the HTML report draws every asset with it, sheets' frames and grid
+// cells included. Its groups are classes (hulls, components, outline), not ids, so that several
+// can share a page.
+std::string preview_svg(RgbaImage sprite, const CookedAsset& asset);
+
+// preview_svg with the sprite already a data: URI of an image of the asset's image_width x
+// image_height px (a PNG file's own bytes, say), which the SVG embeds as it is.
+std::string preview_svg_embedding(std::string sprite_uri, const CookedAsset& asset);
 
 // [px] the smallest long side of a preview; smaller sprites are scaled up by an integer factor.
 inline constexpr int kPreviewMinSize = 512;
