@@ -37,7 +37,7 @@ struct Grid {
   int spacing = 0;                      // [px] between cells
   // --tile [--snap PX]: each cell's shape stays inside the cell, and outline points this near
   // its border lie exactly on it, so that neighbouring solid tiles meet without seams or bumps.
-  std::optional<double> tile_snap;  // [px]
+  std::optional<double> tile_snap = std::nullopt;  // [px]
 
   // The cell size: "64x32", or "64" for a square. Throws UsageError.
   static Grid parse(const std::string& text);
