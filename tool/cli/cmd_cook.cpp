@@ -9,6 +9,7 @@
 #include "hullcook/cook/depfile.h"
 #include "hullcook/cook/html_report.h"
 #include "hullcook/cook/output_file.h"
+#include "hullcook/cook/process_heap.h"
 #include "hullcook/cook/report.h"
 #include "hullcook/core/error.h"
 
@@ -148,6 +149,8 @@ void add_cook(CLI::App& root, CommandAction& action) {
         if (stream) stream->add(index, asset);
         progress.advance(count);
       };
+      // A cook is a batch process: its heap is kept and on huge pages (see there).
+      prepare_process_heap();
       CookResult result = cook(inputs, command->settings, on_cooked);
       if (!command->name.empty()) rename_assets(result, command->name);
       auto files =
