@@ -1,6 +1,6 @@
 #include "gltf_data.h"
 
-#include <meshoptimizer.h>
+#include "hullcook/cook/meshopt_library.h"
 
 #include <array>
 #include <charconv>
@@ -210,15 +210,18 @@ std::string_view GltfData::view_bytes(std::size_t index, const std::string& wher
       count * stride != decoded_length) {
     throw BadGltf(where + ": meshopt count * byteStride does not match its byteLength");
   }
+  std::string problem;
+  const MeshoptLibrary* codecs = meshopt_library(&problem);
+  if (codecs == nullptr) throw BadGltf(where + ": cannot decode meshopt data: " + problem);
   std::string out(decoded_length, '\0');
   const auto* input = reinterpret_cast<const unsigned char*>(stored.data());
   int status = -1;
   if (mode == "ATTRIBUTES" && stride % 4 == 0) {
-    status = meshopt_decodeVertexBuffer(out.data(), count, stride, input, stored.size());
+    status = codecs->decodeVertexBuffer(out.data(), count, stride, input, stored.size());
   } else if (mode == "TRIANGLES" && (stride == 2 || stride == 4) && count % 3 == 0) {
-    status = meshopt_decodeIndexBuffer(out.data(), count, stride, input, stored.size());
+    status = codecs->decodeIndexBuffer(out.data(), count, stride, input, stored.size());
   } else if (mode == "INDICES" && (stride == 2 || stride == 4)) {
-    status = meshopt_decodeIndexSequence(out.data(), count, stride, input, stored.size());
+    status = codecs->decodeIndexSequence(out.data(), count, stride, input, stored.size());
   } else {
     throw BadGltf(where + ": unknown meshopt mode or byteStride");
   }

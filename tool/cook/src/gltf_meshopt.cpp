@@ -1,8 +1,7 @@
 #include "gltf_meshopt.h"
 
+#include "hullcook/cook/meshopt_library.h"
 #include "hullcook/core/error.h"
-
-#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,12 +43,15 @@ std::int16_t Quantization::y(double value) const {
 }
 
 std::string meshopt_compress(std::string_view data, std::size_t stride, MeshoptMode mode) {
+  std::string problem;
+  const MeshoptLibrary* meshopt = meshopt_library(&problem);
+  if (meshopt == nullptr) throw OutputError("cannot compress with meshoptimizer: " + problem);
   const std::size_t count = data.size() / stride;
   std::vector<unsigned char> out;
   std::size_t size = 0;
   if (mode == MeshoptMode::attributes) {
-    out.resize(meshopt_encodeVertexBufferBound(count, stride));
-    size = meshopt_encodeVertexBuffer(out.data(), out.size(), data.data(), count, stride);
+    out.resize(meshopt->encodeVertexBufferBound(count, stride));
+    size = meshopt->encodeVertexBuffer(out.data(), out.size(), data.data(), count, stride);
   } else {
     std::vector<unsigned int> indices(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -64,9 +66,9 @@ std::string meshopt_compress(std::string_view data, std::size_t stride, MeshoptM
     const unsigned int vertices =
         indices.empty() ? 0 : *std::max_element(indices.begin(), indices.end()) + 1;
     // Version 1 of the index codec, the one EXT_meshopt_compression's decoders read.
-    meshopt_encodeIndexVersion(1);
-    out.resize(meshopt_encodeIndexBufferBound(count, vertices));
-    size = meshopt_encodeIndexBuffer(out.data(), out.size(), indices.data(), count);
+    meshopt->encodeIndexVersion(1);
+    out.resize(meshopt->encodeIndexBufferBound(count, vertices));
+    size = meshopt->encodeIndexBuffer(out.data(), out.size(), indices.data(), count);
   }
   if (size == 0) throw OutputError("meshoptimizer could not compress a bufferView");
   return std::string(reinterpret_cast<const char*>(out.data()), size);
