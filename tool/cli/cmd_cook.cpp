@@ -153,8 +153,8 @@ void add_cook(CLI::App& root, CommandAction& action) {
       prepare_process_heap();
       CookResult result = cook(inputs, command->settings, on_cooked);
       if (!command->name.empty()) rename_assets(result, command->name);
-      auto files =
-          output_files(result, outputs, command->settings, files_read(result), stream.get());
+      check_not_read(result, outputs);
+      auto files = output_files(result, outputs, command->settings, {}, stream.get());
       if (!command->depfile.empty()) {
         files.push_back(
             {command->depfile, depfile_text(outputs, cook_dependencies(result, inputs))});

@@ -669,6 +669,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
           // Checked already: only the hulls go on to the writers.
           std::vector<Region>().swap(result.assets[i].regions);
           std::vector<CookedPiece>().swap(result.assets[i].pieces);
+          std::string().swap(result.assets[i].cutout.image);  // a third copy of the source path
         }
       } catch (const std::logic_error& e) {
         // A broken invariant (the decomposer found no cut, say) is ours: named like a contract

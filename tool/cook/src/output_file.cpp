@@ -163,16 +163,19 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
   }
 }
 
+void check_not_the_input(const std::filesystem::path& output, const std::filesystem::path& input) {
+  std::error_code error;
+  if (std::filesystem::equivalent(output, input, error)) {
+    throw UsageError(output.string() + ": this output would replace an input (" + input.string() +
+                     "); write it elsewhere");
+  }
+}
+
 void check_not_an_input(const std::filesystem::path& output,
                         const std::vector<std::filesystem::path>& inputs) {
   std::error_code error;
   if (!std::filesystem::exists(output, error)) return;
-  for (const std::filesystem::path& input : inputs) {
-    if (std::filesystem::equivalent(output, input, error)) {
-      throw UsageError(output.string() + ": this output would replace an input (" + input.string() +
-                       "); write it elsewhere");
-    }
-  }
+  for (const std::filesystem::path& input : inputs) check_not_the_input(output, input);
 }
 
 }  // namespace hullcook

@@ -7,6 +7,7 @@
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 
+#include <functional>
 #include <set>
 #include <string>
 #include <system_error>
@@ -56,23 +57,35 @@ void check_output_path(const std::filesystem::path& path) {
   check_directory_of(path);
 }
 
-std::vector<std::filesystem::path> files_read(const CookResult& result) {
-  std::vector<std::filesystem::path> files;
+void for_each_file_read(const CookResult& result,
+                        const std::function<void(const std::filesystem::path&)>& visit) {
   AssetSettings settings_files;
   std::set<std::string> seen;
   for (const CookedAsset& asset : result.assets) {
     // A sheet's cells share their source and its settings files.
     if (!seen.insert(asset.source).second) continue;
-    files.emplace_back(asset.source);
+    visit(asset.source);
     const std::filesystem::path sidecar = physics_sidecar(asset.source);
     std::error_code error;
-    if (std::filesystem::exists(sidecar, error)) files.push_back(sidecar);
-    for (std::filesystem::path& file : settings_files.files_for(asset.source)) {
-      files.push_back(std::move(file));
-    }
+    if (std::filesystem::exists(sidecar, error)) visit(sidecar);
+    for (const std::filesystem::path& file : settings_files.files_for(asset.source)) visit(file);
   }
-  files.insert(files.end(), result.sheet_images.begin(), result.sheet_images.end());
+  for (const std::filesystem::path& image : result.sheet_images) visit(image);
+}
+
+std::vector<std::filesystem::path> files_read(const CookResult& result) {
+  std::vector<std::filesystem::path> files;
+  for_each_file_read(result, [&](const std::filesystem::path& file) { files.push_back(file); });
   return files;
+}
+
+void check_not_read(const CookResult& result, const std::vector<std::filesystem::path>& outputs) {
+  for (const std::filesystem::path& output : outputs) {
+    std::error_code error;
+    if (!std::filesystem::exists(output, error)) continue;
+    for_each_file_read(
+        result, [&](const std::filesystem::path& file) { check_not_the_input(output, file); });
+  }
 }
 
 void write_output(const CookResult& result, const std::filesystem::path& path,
@@ -101,7 +114,8 @@ std::vector<OutputFile> output_files(const CookResult& result,
 
 void write_outputs(const CookResult& result, const std::vector<std::filesystem::path>& paths,
                    const Settings& settings) {
-  write_files_atomically(output_files(result, paths, settings, files_read(result)));
+  check_not_read(result, paths);
+  write_files_atomically(output_files(result, paths, settings, {}));
 }
 
 }  // namespace hullcook

@@ -76,9 +76,10 @@ struct Settings {
   bool draco = false;
   bool meshopt = false;  // glTF: EXT_meshopt_compression + KHR_mesh_quantization
   unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
-  // Keep each asset's regions and pieces (with their components) in the result: the debug JSON
-  // needs them, the bundle and glTF writers only the levels' hulls. Without them a cook's memory
-  // grows with its hulls alone (issue 19: 10,000 assets in the memory of 100).
+  // Keep each asset's regions and pieces (with their components) and its cutout's image path in
+  // the result: the debug JSON and the HTML report need them, the bundle and glTF writers only
+  // the levels' hulls. Without them a cook's memory grows with its hulls alone (issue 19: 10,000
+  // assets in the memory of 100).
   bool keep_outlines = true;
   // Keep the levels' hulls in the result. A streamed output (BundleStream) takes them as each
   // asset is cooked (cook's on_cooked), after which they may go: CookedStats keeps their count.
@@ -121,9 +122,18 @@ void refuse_too_many_holes(const std::vector<Region>& regions, const std::string
 // The physics sidecar of an input image: NAME.physics.json beside NAME.png.
 std::filesystem::path physics_sidecar(const std::filesystem::path& input);
 
-// The files a cook read: every asset's source, and its physics sidecar where there is one, and
-// the sheets' atlases.
+// The files a cook read: every asset's source, and its physics sidecar and settings files where
+// there are some, and the sheets' atlases.
 std::vector<std::filesystem::path> files_read(const CookResult& result);
+
+// Calls visit with each of files_read(result) without holding them all (a path keeps a list of its
+// components: at 10,000 assets the list was a seventh of a cook's peak memory).
+void for_each_file_read(const CookResult& result,
+                        const std::function<void(const std::filesystem::path&)>& visit);
+
+// Throws UsageError when an output exists and is one of the files the cook read (see
+// check_not_an_input).
+void check_not_read(const CookResult& result, const std::vector<std::filesystem::path>& outputs);
 
 class BundleStream;
 

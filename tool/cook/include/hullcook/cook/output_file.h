@@ -44,4 +44,7 @@ void remove_pending_temporaries() noexcept;
 void check_not_an_input(const std::filesystem::path& output,
                         const std::vector<std::filesystem::path>& inputs);
 
+// check_not_an_input against one input (output is known to exist; no error if input does not).
+void check_not_the_input(const std::filesystem::path& output, const std::filesystem::path& input);
+
 }  // namespace hullcook
