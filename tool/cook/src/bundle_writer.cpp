@@ -65,9 +65,9 @@ double distance_to_polygon(Vec2 p, const Ring& ring) {
     const Vec2 a = ring[j], b = ring[i];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
       inside = !inside;
-    best = std::min(best, point_segment_distance(p, a, b));
+    best = std::min(best, point_segment_distance_squared(p, a, b));
   }
-  return inside ? 0.0 : best;
+  return inside ? 0.0 : std::sqrt(best);
 }
 
 // Two-sided Hausdorff distance of two simple polygons whose farthest points are vertices (true
@@ -102,12 +102,18 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   const double quantum = step;
   std::vector<GridPoint> points;
   points.reserve(hull.size());
+  // The farthest a vertex moves [output units, squared], and the largest coordinate.
+  double moved_squared = 0.0, size = 0.0;
   for (const Vec2& p : hull) {
     const double qx = std::nearbyint(p.x / quantum), qy = std::nearbyint(p.y / quantum);
     // Keep |base| + 2^15 within int32.
     if (std::fabs(qx) > 2.0e9 || std::fabs(qy) > 2.0e9)
       fail(asset, "a hull vertex is too far from the origin for the bundle's 32-bit grid");
     points.push_back({static_cast<std::int64_t>(qx), static_cast<std::int64_t>(qy)});
+    // format::dequantize gives the grid point's value as qx * quantum exactly.
+    const double dx = qx * quantum - p.x, dy = qy * quantum - p.y;
+    moved_squared = std::max(moved_squared, dx * dx + dy * dy);
+    size = std::max({size, std::fabs(p.x), std::fabs(p.y)});
   }
   const std::vector<GridPoint> grid = strict_convex_hull(std::move(points));
   if (grid.size() < format::kMinHullVertices) return Attempt::too_coarse;
@@ -130,11 +136,18 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   out.record.base_x = static_cast<std::int32_t>(base_x);
   out.record.base_y = static_cast<std::int32_t>(base_y);
   out.vertices.clear();
-  Ring stored;
+  out.vertices.reserve(grid.size());
   for (const GridPoint& p : grid) {
-    const VertexRecord v{static_cast<std::int16_t>(p.x - base_x),
-                         static_cast<std::int16_t>(p.y - base_y)};
-    out.vertices.push_back(v);
+    out.vertices.push_back(
+        {static_cast<std::int16_t>(p.x - base_x), static_cast<std::int16_t>(p.y - base_y)});
+  }
+  // Each stored vertex is a hull vertex moved, and each hull vertex moved lies in the stored
+  // (convex) hull: no vertex of either is farther from the other polygon than the farthest move.
+  // The margin covers the rounding of hausdorff() below, which then could not say otherwise.
+  if (std::sqrt(moved_squared) <= bound - 1e-12 * size) return Attempt::ok;
+  Ring stored;
+  stored.reserve(grid.size());
+  for (const VertexRecord& v : out.vertices) {
     stored.push_back({format::dequantize(out.record.base_x, v.dx, step),
                       format::dequantize(out.record.base_y, v.dy, step)});
   }

@@ -230,13 +230,14 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
   visited_.assign(edges_.size(), 0);
 }
 
+// Clamped first, truncation is the floor (and a negative value clamps to 0 either way).
 int OutlineDistance::column_of(double x) const {
-  double column = std::floor((x - origin_.x) / cell_);
+  double column = (x - origin_.x) / cell_;
   return static_cast<int>(std::clamp(column, 0.0, static_cast<double>(columns_ - 1)));
 }
 
 int OutlineDistance::row_of(double y) const {
-  double row = std::floor((y - origin_.y) / cell_);
+  double row = (y - origin_.y) / cell_;
   return static_cast<int>(std::clamp(row, 0.0, static_cast<double>(rows_ - 1)));
 }
 
@@ -309,14 +310,14 @@ double OutlineDistance::distance(Vec2 p, double limit) const {
   if (outside > limit) return outside;
   int column = column_of(p.x), row = row_of(p.y);
   int rings = std::max(columns_, rows_);
-  double best = kInfinity;
+  double best = kInfinity, best_squared = kInfinity;
   for (int k = 0; k <= rings; ++k) {
     auto scan = [&](int c, int r) {
       if (c < 0 || r < 0 || c >= columns_ || r >= rows_) return;
       std::size_t cell = static_cast<std::size_t>(r) * columns_ + c;
       for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
         const Edge& e = edges_[cell_edges_[i]];
-        best = std::min(best, point_segment_distance(p, e.a, e.b));
+        best_squared = std::min(best_squared, point_segment_distance_squared(p, e.a, e.b));
       }
     };
     if (k == 0) {
@@ -331,6 +332,7 @@ double OutlineDistance::distance(Vec2 p, double limit) const {
         scan(column + k, r);
       }
     }
+    best = std::sqrt(best_squared);
     double unseen = std::max(outside, k * cell_);
     if (best <= unseen || unseen > limit) break;
   }

@@ -329,7 +329,7 @@ SegmentProjection project_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 }
 
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  return project_on_segment(p, a, b).distance;
+  return std::sqrt(point_segment_distance_squared(p, a, b));
 }
 
 namespace {

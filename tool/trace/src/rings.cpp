@@ -2,6 +2,8 @@
 // check: any simplified edge that crosses or touches another is refined until none does).
 #include "rings.h"
 
+#include "hullcook/core/geometry.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -20,19 +22,6 @@ constexpr double kTouch = 1e-9;
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
-
-// The square of point_segment_distance(), as it is before its square root.
-double point_segment_distance2(Vec2 p, Vec2 a, Vec2 b) {
-  Vec2 ab = b - a;
-  double length2 = glm::dot(ab, ab);
-  double t = length2 > 0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  Vec2 v = p - (a + t * ab);
-  return glm::dot(v, v);
-}
-
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  return std::sqrt(point_segment_distance2(p, a, b));
-}
 
 // Keeps the index of the largest distance, the first of equals, as comparing the distances
 // themselves would: the square root is taken only when the square grows (the square root is
@@ -161,7 +150,7 @@ class Simplifier {
     const Vec2 a = ring[s.from], b = ring[s.to];
     Farthest farthest;
     for (int i = s.from + 1 == n ? 0 : s.from + 1; i != s.to; i = i + 1 == n ? 0 : i + 1) {
-      farthest.offer(i, point_segment_distance2(ring[i], a, b));
+      farthest.offer(i, point_segment_distance_squared(ring[i], a, b));
     }
     return farthest.index();
   }
@@ -238,10 +227,10 @@ class Simplifier {
     const int columns = static_cast<int>(extent.x / cell) + 2,
               rows = static_cast<int>(extent.y / cell) + 2;
     auto clamp_column = [&](double x) {
-      return std::clamp(static_cast<int>(std::floor((x - low.x) / cell)), 0, columns - 1);
+      return std::clamp(static_cast<int>((x - low.x) / cell), 0, columns - 1);
     };
     auto clamp_row = [&](double y) {
-      return std::clamp(static_cast<int>(std::floor((y - low.y) / cell)), 0, rows - 1);
+      return std::clamp(static_cast<int>((y - low.y) / cell), 0, rows - 1);
     };
     const double margin = 1e-6;
     auto for_each_cell = [&](const Segment& segment, auto&& visit) {
@@ -351,9 +340,10 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
     int index;
   };
   const int rows = static_cast<int>(std::floor(high_y - low_y)) + 1;
+  // y - low_y is never negative: truncation is the floor.
   auto row_range = [&](Vec2 a, Vec2 b) {
-    return std::pair{static_cast<int>(std::floor(std::min(a.y, b.y) - low_y)),
-                     static_cast<int>(std::floor(std::max(a.y, b.y) - low_y))};
+    return std::pair{static_cast<int>(std::min(a.y, b.y) - low_y),
+                     static_cast<int>(std::max(a.y, b.y) - low_y)};
   };
   std::vector<int> starts(static_cast<std::size_t>(rows) + 1, 0);
   for (int r = 0; r < count; ++r) {
@@ -379,9 +369,7 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
   // A row's edges are sorted (for the walk below) only when the row has many queries: with a
   // few, one scan of its edges is cheaper.
   constexpr int kScanQueries = 8;
-  auto row_of = [&](int r) {
-    return static_cast<int>(std::floor(rings[r][leftmost[r]].y - low_y));
-  };
+  auto row_of = [&](int r) { return static_cast<int>(rings[r][leftmost[r]].y - low_y); };
   std::vector<int> queries(rows, 0);
   for (int r = 0; r < count; ++r) ++queries[row_of(r)];
   for (int row = 0; row < rows; ++row) {

@@ -48,6 +48,18 @@ Location locate_point(const Region& region, Vec2 p);
 // Euclidean distance from p to the closed segment ab [units].
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
 
+// Its square [units²], as it is before the square root: the least of several distances is the
+// square root of the least square, exactly (a correctly rounded square root is monotone), so a
+// search takes one square root instead of one per segment.
+inline double point_segment_distance_squared(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.x * ab.x + ab.y * ab.y;
+  double t = length2 > 0.0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  const Vec2 d = p - (a + ab * t);
+  return d.x * d.x + d.y * d.y;
+}
+
 // The point of the closed segment ab nearest to p: its parameter (0 at a, 1 at b; exactly 0 or 1
 // when it is an end) and its distance from p [units].
 struct SegmentProjection {
