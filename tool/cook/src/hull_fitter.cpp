@@ -52,6 +52,31 @@ std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i) {
   return a + before * t;
 }
 
+// True when the ring turns left at every vertex (exactly) and winds once around: a simple convex
+// polygon, inside which is every point left of all its edges.
+bool winds_once_left(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  double turning = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 before = ring[i == 0 ? n - 1 : i - 1], at = ring[i], after = ring[(i + 1) % n];
+    if (orientation(before, at, after) <= 0) return false;
+    turning += std::atan2(cross(at - before, after - at), glm::dot(at - before, after - at));
+  }
+  return turning < 3 * std::acos(-1.0);  // 2π once, 4π or more for a star
+}
+
+// True when p lies left of every edge of the ring by more than a floating-point orientation's
+// rounding can reach (Shewchuk's first error bound, taken three times over).
+bool clearly_left_of_every_edge(const Ring& ring, Vec2 p) {
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
+    const double left = (a.x - p.x) * (b.y - p.y), right = (a.y - p.y) * (b.x - p.x);
+    if (!(left - right > 1e-15 * (std::abs(left) + std::abs(right)))) return false;
+  }
+  return true;
+}
+
 Ring without_edge(const Ring& hull, std::size_t i, Vec2 apex) {
   std::size_t n = hull.size();
   Ring grown;
@@ -135,8 +160,25 @@ bool pockets_within(const Region& component, const Ring& hull, double bound) {
 
 std::vector<double> allowed_depths(const Region& component, const Ring& hull, double bound) {
   std::vector<double> allowed;
-  for_each_vertex(component,
-                  [&](Vec2 v) { allowed.push_back(std::max(bound, distance_to_ring(v, hull))); });
+  // Most vertices lie on the hull or in shallow pockets: one edge within the bound settles them.
+  // Below this square the distance's square root is below the bound whatever the rounding.
+  const double settled = bound * bound * (1 - 1e-14);
+  const std::size_t m = hull.size();
+  std::size_t hint = 0;  // the edge that settled the last vertex; its neighbours come next
+  for_each_vertex(component, [&](Vec2 v) {
+    double least = std::numeric_limits<double>::infinity();  // as distance_to_ring's
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::size_t i = hint + k < m ? hint + k : hint + k - m;
+      least =
+          std::min(least, point_segment_distance_squared(v, hull[i], hull[i + 1 == m ? 0 : i + 1]));
+      if (least <= settled) {
+        hint = i;
+        allowed.push_back(bound);
+        return;
+      }
+    }
+    allowed.push_back(std::max(bound, std::sqrt(least)));
+  });
   return allowed;
 }
 
@@ -235,7 +277,10 @@ std::optional<Ring> HullFitter::seal(Ring hull) const {
   for (double shift = 0x1p-52 * size; shift <= 0x1p-30 * size; shift *= 2) {
     std::vector<bool> push(n, false);
     bool outside = false;
+    // Most vertices are well inside: the exact location is taken only near the boundary.
+    const bool convex = winds_once_left(hull);
     for_each_vertex(component_, [&](Vec2 v) {
+      if (convex && clearly_left_of_every_edge(hull, v)) return;
       if (locate_point(hull, v) != Location::outside) return;
       outside = true;
       for (std::size_t i = 0; i < n; ++i) {
