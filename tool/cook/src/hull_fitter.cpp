@@ -281,6 +281,7 @@ std::optional<Ring> HullFitter::seal(Ring hull) const {
     const bool convex = winds_once_left(hull);
     for_each_vertex(component_, [&](Vec2 v) {
       if (convex && clearly_left_of_every_edge(hull, v)) return;
+      if (std::find(hull.begin(), hull.end(), v) != hull.end()) return;  // a corner: on it
       if (locate_point(hull, v) != Location::outside) return;
       outside = true;
       for (std::size_t i = 0; i < n; ++i) {
