@@ -379,18 +379,12 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   corner_reach_.resize(m);
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
   apex_points_.assign(m * m, Vec2{0, 0});
-  // The closed polygons, as runs of kept edge indices in one array (a hull is reduced many
-  // times a cook: one allocation, not one per start).
-  std::vector<std::size_t>& kept_edges = kept_edges_;
-  std::vector<Run>& closed = closed_runs_;
-  kept_edges.clear();
-  closed.clear();
+  std::vector<std::vector<std::size_t>> closed;
   for (std::size_t start = 0; start < m; ++start) {
-    const std::size_t first = kept_edges.size();
-    kept_edges.push_back(start);
+    std::vector<std::size_t> kept{start};
     std::size_t current = start;
     bool is_closed = false;
-    while (kept_edges.size() - first <= limits_.max_verts) {
+    while (kept.size() <= limits_.max_verts) {
       std::size_t farthest = current + 1;
       for (std::size_t j = current + 2; j <= start + m; ++j) {
         if (!apex_within(hull, current % m, j % m)) break;
@@ -400,37 +394,25 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
         is_closed = true;
         break;
       }
-      kept_edges.push_back(farthest);
+      kept.push_back(farthest);
       current = farthest;
     }
-    const std::size_t size = kept_edges.size() - first;
-    if (!is_closed || size > limits_.max_verts || size < 3) {
-      kept_edges.resize(first);
-      continue;
-    }
-    // The same polygon comes from several starts: each is stored from its least index.
-    const auto begin = kept_edges.begin() + static_cast<std::ptrdiff_t>(first);
-    for (auto k = begin; k != kept_edges.end(); ++k) *k %= m;
-    std::rotate(begin, std::min_element(begin, kept_edges.end()), kept_edges.end());
-    closed.push_back({first, size});
+    if (!is_closed || kept.size() > limits_.max_verts || kept.size() < 3) continue;
+    for (std::size_t& k : kept) k %= m;
+    closed.push_back(std::move(kept));
   }
-  // Each polygon is tried once, fewest vertices first.
+  // The same polygon comes from several starts; try each once, fewest vertices first.
+  for (std::vector<std::size_t>& kept : closed)
+    std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
   std::stable_sort(closed.begin(), closed.end(),
-                   [](const Run& a, const Run& b) { return a.size < b.size; });
-  auto same = [&](const Run& a, const Run& b) {
-    return a.size == b.size &&
-           std::equal(kept_edges.begin() + a.first, kept_edges.begin() + a.first + a.size,
-                      kept_edges.begin() + b.first);
-  };
-  for (std::size_t c = 0; c < closed.size(); ++c) {
-    const Run& run = closed[c];
-    bool seen = false;
-    for (std::size_t d = 0; d < c && !seen; ++d) seen = same(closed[d], run);
-    if (seen) continue;
+                   [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::vector<std::vector<std::size_t>> tried;
+  for (const std::vector<std::size_t>& kept : closed) {
+    if (std::find(tried.begin(), tried.end(), kept) != tried.end()) continue;
+    tried.push_back(kept);
     Ring polygon;
-    polygon.reserve(run.size);
-    for (std::size_t k = 0; k < run.size; ++k) {
-      std::size_t i = kept_edges[run.first + k], j = kept_edges[run.first + (k + 1) % run.size];
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      std::size_t i = kept[k], j = kept[(k + 1) % kept.size()];
       polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
     }
     // The new edges are the stretches apex_within checked.

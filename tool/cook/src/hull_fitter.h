@@ -83,11 +83,6 @@ class HullFitter {
   std::vector<ApexState> apex_cache_;
   std::vector<Vec2> apex_points_;
   std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
-  struct Run {
-    std::size_t first, size;  // kept_edges_[first .. first + size)
-  };
-  std::vector<std::size_t> kept_edges_;
-  std::vector<Run> closed_runs_;
 };
 
 }  // namespace hullcook
