@@ -47,16 +47,24 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
   // Opaque flags (0 or 1) of pixel rows y and y+1, index x+1, with the transparent padding at both
   // ends and eight spare zero bytes for the word loads.
   const std::size_t stride = static_cast<std::size_t>(width) + 2 + 8;
+  const auto level8 = static_cast<std::uint8_t>(threshold);  // threshold is within [0, 255]
   std::vector<std::uint8_t> flags(2 * stride, 0);
   std::uint8_t* upper = flags.data();
   std::uint8_t* lower = flags.data() + stride;
+  // Loads row y's flags into out; true when one of them is opaque.
   auto load_flags = [&](int y, std::uint8_t* out) {
     if (y < 0 || y >= height) {
       std::fill(out, out + stride, std::uint8_t{0});
-      return;
+      return false;
     }
     const std::uint8_t* alpha = image.alpha.data() + static_cast<std::size_t>(y) * width;
-    for (int x = 0; x < width; ++x) out[x + 1] = alpha[x] >= threshold;
+    // Compared as bytes, sixteen to a vector instruction (as int, four).
+    std::uint8_t any = 0;
+    for (int x = 0; x < width; ++x) {
+      out[x + 1] = alpha[x] >= level8;
+      any |= out[x + 1];
+    }
+    return any != 0;
   };
   auto word = [](const std::uint8_t* p) {
     std::uint64_t w;
@@ -106,12 +114,13 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     }
   };
 
-  load_flags(-1, upper);
+  bool upper_any = load_flags(-1, upper);
   for (int y = -1; y < height; ++y) {
-    load_flags(y + 1, lower);
+    const bool lower_any = load_flags(y + 1, lower);
     row_first = static_cast<int>(points.size());
-    // Cells x = -1 .. width-1 are i = x+1 = 0 .. width; eight at a time while uniform.
-    for (int i = 0; i <= width;) {
+    // Cells x = -1 .. width-1 are i = x+1 = 0 .. width; eight at a time while uniform, and none
+    // between two transparent rows (a sprite's margins, an atlas's gaps).
+    for (int i = upper_any || lower_any ? 0 : width + 1; i <= width;) {
       const std::uint64_t a = word(upper + i), a1 = word(upper + i + 1), b = word(lower + i),
                           b1 = word(lower + i + 1);
       if (((a | a1 | b | b1) ^ (a & a1 & b & b1)) == 0) {
@@ -125,6 +134,7 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     }
     std::swap(top, bottom);
     std::swap(upper, lower);
+    upper_any = lower_any;
     top_first = row_first;
   }
 
