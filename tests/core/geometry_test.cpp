@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace hullcook {
@@ -25,6 +26,32 @@ TEST(Geometry, SignedAreaAndLocation) {
   EXPECT_DOUBLE_EQ(point_segment_distance({1, 1}, {0, 0}, {2, 0}), 1.0);
   EXPECT_DOUBLE_EQ(point_segment_distance({3, 4}, {0, 0}, {0, 0}), 5.0);
   EXPECT_DOUBLE_EQ(point_segment_distance({-3, 4}, {0, 0}, {2, 0}), 5.0);
+}
+
+// Distance searches keep the least square and take one square root (issue 17): that must be the
+// least of the distances to the last bit, at every scale and for degenerate segments.
+TEST(Geometry, Issue17_LeastSquaredDistanceGivesTheLeastDistanceExactly) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-30, 30);
+  for (int group = 0; group < 2000; ++group) {
+    const double scale = std::ldexp(1.0, exponent(random));
+    auto point = [&] { return Vec2{scale * unit(random), scale * unit(random)}; };
+    const Vec2 p = point();
+    double least = std::numeric_limits<double>::infinity();
+    double least_squared = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 12; ++k) {
+      const Vec2 a = point();
+      // Every fourth segment is a point, and every fourth nearly one.
+      const Vec2 b = k % 4 == 0 ? a : (k % 4 == 1 ? a + Vec2{scale * 1e-13, 0} : point());
+      const double distance = point_segment_distance(p, a, b);
+      EXPECT_EQ(distance, std::sqrt(point_segment_distance_squared(p, a, b)));
+      EXPECT_EQ(distance, project_on_segment(p, a, b).distance);
+      least = std::min(least, distance);
+      least_squared = std::min(least_squared, point_segment_distance_squared(p, a, b));
+    }
+    EXPECT_EQ(least, std::sqrt(least_squared)) << "group " << group;
+  }
 }
 
 TEST(Geometry, ConvexHullIsStrictlyConvexAndContainsEveryPoint) {
