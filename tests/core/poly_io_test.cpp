@@ -123,6 +123,26 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("missing.poly/nope", ""), HasSubstr("missing.poly"));
 }
 
+// The description of the value expected is built only when a token is wrong (issue 22: building
+// it for every number was most of a .poly's parsing time); each still names its token.
+TEST(PolyIo, Issue22_EachWrongTokenIsNamedByLineChainAndPlace) {
+  const std::string square = "4 out\n0 0\n10 0\n10 10\n0 10\n1 2 3 4\n";
+  EXPECT_EQ(error_of("n.poly", "one\n" + square),
+            std::filesystem::temp_directory_path().string() +
+                "/hullcook_core_n.poly:1: expected the number of chains, found 'one'");
+  EXPECT_THAT(error_of("count.poly", "2\n" + square + "four in\n"),
+              HasSubstr("count.poly:8: expected the vertex count of chain 2, found 'four'"));
+  EXPECT_THAT(error_of("x.poly", "1\n4 out\n0 0\n10 0\nten 10\n0 10\n1 2 3 4\n"),
+              HasSubstr("x.poly:5: expected x of vertex 3 of chain 1, found 'ten'"));
+  EXPECT_THAT(error_of("y.poly", "1\n4 out\n0 0\n10 0\n10 10\n0 ten\n1 2 3 4\n"),
+              HasSubstr("y.poly:6: expected y of vertex 4 of chain 1, found 'ten'"));
+  EXPECT_THAT(error_of("order.poly", "1\n4 out\n0 0\n10 0\n10 10\n0 10\n1 2 three 4\n"),
+              HasSubstr("order.poly:7: expected index 3 of the order of chain 1, found 'three'"));
+  EXPECT_THAT(
+      error_of("short.poly", "1\n4 out\n0 0\n10 0\n10 10\n0 10\n1 2 3\n"),
+      HasSubstr("short.poly:8: file ends where index 4 of the order of chain 1 was expected"));
+}
+
 // The crossing check on zigzags of long diagonal teeth, where each edge's box covers a large part
 // of the grid (it once entered every edge in every cell of its box, and took cubic time). The
 // expected answer is found by testing every pair: the first edge in ring order that meets a

@@ -38,20 +38,24 @@ class Tokenizer {
     throw InputError(std::string(source_) + ":" + std::to_string(token_line_) + ": " + problem);
   }
 
-  long long integer(const char* what) {
+  // what() names the value expected, for the error message only: built when a token is wrong,
+  // since building it for every number was most of a file's parsing time.
+  template <class What>
+  long long integer(const What& what) {
     const std::string_view token = next();
-    if (token.empty()) fail(std::string("file ends where ") + what + " was expected");
+    if (token.empty()) fail("file ends where " + what() + " was expected");
     long long value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size()) {
-      fail(std::string("expected ") + what + ", found '" + std::string(token) + "'");
+      fail("expected " + what() + ", found '" + std::string(token) + "'");
     }
     return value;
   }
 
-  double real(const char* what) {
+  template <class What>
+  double real(const What& what) {
     std::string_view token = next();
-    if (token.empty()) fail(std::string("file ends where ") + what + " was expected");
+    if (token.empty()) fail("file ends where " + what() + " was expected");
     std::string_view digits = token;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0.0;
@@ -59,7 +63,7 @@ class Tokenizer {
     if (error == std::errc::result_out_of_range) {
       value = std::numeric_limits<double>::infinity();
     } else if (error != std::errc() || end != digits.data() + digits.size()) {
-      fail(std::string("expected ") + what + ", found '" + std::string(token) + "'");
+      fail("expected " + what() + ", found '" + std::string(token) + "'");
     }
     return value;
   }
@@ -99,13 +103,13 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
   if (tokens.at_end()) {
     throw InputError(std::string(source) + ": empty file: no polygon");
   }
-  const long long chains = tokens.integer("the number of chains");
+  const long long chains = tokens.integer([] { return std::string("the number of chains"); });
   if (chains <= 0) tokens.fail("the number of chains must be positive");
   if (chains > 10'000'000) tokens.fail("implausible number of chains");
   std::vector<Region> regions;
   for (long long chain = 1; chain <= chains; ++chain) {
     const std::string chain_name = "chain " + std::to_string(chain);
-    const long long count = tokens.integer(("the vertex count of " + chain_name).c_str());
+    const long long count = tokens.integer([&] { return "the vertex count of " + chain_name; });
     if (count < 0) tokens.fail("negative vertex count for " + chain_name);
     if (count > 100'000'000) tokens.fail("implausible vertex count for " + chain_name);
     const std::string_view tag = tokens.next();
@@ -117,9 +121,9 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
     points.reserve(static_cast<std::size_t>(count));
     for (long long i = 0; i < count; ++i) {
       const double x =
-          tokens.real(("x of vertex " + std::to_string(i + 1) + " of " + chain_name).c_str());
+          tokens.real([&] { return "x of vertex " + std::to_string(i + 1) + " of " + chain_name; });
       const double y =
-          tokens.real(("y of vertex " + std::to_string(i + 1) + " of " + chain_name).c_str());
+          tokens.real([&] { return "y of vertex " + std::to_string(i + 1) + " of " + chain_name; });
       points.push_back({x, y});
     }
     Ring ring;
@@ -127,7 +131,7 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
     std::vector<bool> used(points.size(), false);
     for (long long i = 0; i < count; ++i) {
       const long long index = tokens.integer(
-          ("index " + std::to_string(i + 1) + " of the order of " + chain_name).c_str());
+          [&] { return "index " + std::to_string(i + 1) + " of the order of " + chain_name; });
       if (index < 1 || index > count) {
         tokens.fail(chain_name + ": order index " + std::to_string(index) + " is not in 1.." +
                     std::to_string(count) + " (do the counts match?)");
