@@ -27,6 +27,36 @@ TEST(Cli, HelpListsExitCodes) {
   EXPECT_NE(result.output.find("Exit codes"), std::string::npos) << result.output;
 }
 
+TEST(Cli, HelpListsEverySubcommand) {
+  auto result = run_hullcook("--help");
+  for (const char* name : {"cook", "link", "decompose", "preview", "inspect"}) {
+    EXPECT_NE(result.output.find(std::string("\n  ") + name + " "), std::string::npos)
+        << name << "\n"
+        << result.output;
+  }
+}
+
+// A command line naming a subcommand sets up only that one (issue 22: start-up); each still
+// parses its own options, its help and its usage errors as when all were set up.
+TEST(Cli, Issue22_EachSubcommandAloneHasItsHelpAndOptions) {
+  const struct {
+    const char* name;
+    const char* option;
+  } commands[] = {{"cook", "--max-verts"},
+                  {"link", "--output"},
+                  {"decompose", "--measure"},
+                  {"preview", "OUT.png or OUT.svg"},
+                  {"inspect", "--json"}};
+  for (const auto& command : commands) {
+    auto help = run_hullcook(std::string(command.name) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << command.name;
+    EXPECT_NE(help.output.find(command.option), std::string::npos) << command.name << "\n"
+                                                                   << help.output;
+    auto wrong = run_hullcook(std::string(command.name) + " --no-such-option");
+    EXPECT_EQ(wrong.exit_code, static_cast<int>(ExitCode::usage)) << command.name;
+  }
+}
+
 TEST(Cli, UnknownOptionIsUsageError) {
   auto result = run_hullcook("--no-such-option");
   EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;

@@ -170,7 +170,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
   });
 }
 
-const CommandRegistration registered{20, add_cook};
+const CommandRegistration registered{20, "cook", add_cook};
 
 }  // namespace
 }  // namespace hullcook::cli

@@ -150,7 +150,7 @@ void add_decompose(CLI::App& root, CommandAction& action) {
   command->callback([options, &action] { action = [options] { return run_decompose(*options); }; });
 }
 
-const CommandRegistration registered{30, add_decompose};
+const CommandRegistration registered{30, "decompose", add_decompose};
 
 }  // namespace
 }  // namespace hullcook::cli

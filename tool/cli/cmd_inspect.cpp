@@ -178,7 +178,7 @@ void add_inspect(CLI::App& root, CommandAction& action) {
   });
 }
 
-const CommandRegistration registered{60, add_inspect};
+const CommandRegistration registered{60, "inspect", add_inspect};
 
 }  // namespace
 }  // namespace hullcook::cli

@@ -103,7 +103,7 @@ void add_link(CLI::App& root, CommandAction& action) {
   });
 }
 
-const CommandRegistration registered{25, add_link};
+const CommandRegistration registered{25, "link", add_link};
 
 }  // namespace
 }  // namespace hullcook::cli

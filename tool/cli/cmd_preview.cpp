@@ -66,7 +66,7 @@ void add_preview(CLI::App& root, CommandAction& action) {
   });
 }
 
-const CommandRegistration registered{30, add_preview};
+const CommandRegistration registered{30, "preview", add_preview};
 
 }  // namespace
 }  // namespace hullcook::cli

@@ -11,14 +11,21 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace hullcook::cli {
 namespace {
 
-std::vector<std::pair<int, AddCommand>>& registered_commands() {
-  static std::vector<std::pair<int, AddCommand>> commands;
+struct RegisteredCommand {
+  int order;
+  const char* name;
+  AddCommand add;
+};
+
+std::vector<RegisteredCommand>& registered_commands() {
+  static std::vector<RegisteredCommand> commands;
   return commands;
 }
 
@@ -41,8 +48,8 @@ void install_signal_handlers() {
 
 }  // namespace
 
-CommandRegistration::CommandRegistration(int order, AddCommand add) {
-  registered_commands().emplace_back(order, add);
+CommandRegistration::CommandRegistration(int order, const char* name, AddCommand add) {
+  registered_commands().push_back({order, name, add});
 }
 
 }  // namespace hullcook::cli
@@ -64,8 +71,17 @@ int main(int argc, char** argv) {
   cli::CommandAction action;
   auto commands = cli::registered_commands();
   std::stable_sort(commands.begin(), commands.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& command : commands) command.second(app, action);
+                   [](const auto& a, const auto& b) { return a.order < b.order; });
+  // The root takes no option but --help and --version, so a first argument naming a subcommand
+  // is that subcommand: only it is set up. Anything else (help, a typo) sees them all.
+  const auto named = std::find_if(commands.begin(), commands.end(), [&](const auto& command) {
+    return argc > 1 && std::string_view(argv[1]) == command.name;
+  });
+  if (named != commands.end()) {
+    named->add(app, action);
+  } else {
+    for (const auto& command : commands) command.add(app, action);
+  }
 
   try {
     app.parse(argc, argv);
