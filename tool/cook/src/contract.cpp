@@ -140,7 +140,6 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
   return std::nullopt;
 }
 
-// Sets cleaned to the component without repeated or collinear vertices (what is measured).
 // Whether ring is a strictly convex counter-clockwise polygon: every turn strictly left (exact
 // predicate) and the edges' directions turning once round, so that x and y each change their
 // direction at most twice. Such a ring is simple, and its concavity 0 under every measure.
@@ -167,16 +166,14 @@ bool is_strictly_convex_ccw(const Ring& ring) {
   return x_changes <= 2 && y_changes <= 2;
 }
 
-// convex: the component has no hole and is_strictly_convex_ccw.
+// convex: the component has no hole and is_strictly_convex_ccw. Unless convex, sets cleaned to
+// the component without repeated or collinear vertices (what is measured); a convex one is
+// measured as it is.
 std::optional<std::string> component_defect(const Region& component, bool convex, double slack,
                                             Region& cleaned) {
   try {
     // A convex piece (most of them) is valid by that test; the others are validated whole.
-    if (convex) {
-      cleaned = component;
-    } else {
-      cleaned = std::move(clean_and_validate({component}, "").front());
-    }
+    if (!convex) cleaned = std::move(clean_and_validate({component}, "").front());
   } catch (const InputError& error) {
     // "': region 1 outer boundary: self-intersection ..." names the component's own rings.
     std::string problem = error.what();
@@ -297,6 +294,7 @@ std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limi
 class HullLines {
  public:
   explicit HullLines(const Ring& hull) {
+    from_.reserve(hull.size()), direction_.reserve(hull.size());
     for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
       const Vec2 edge = hull[(i + 1) % n] - hull[i];
       from_.push_back(hull[i]);

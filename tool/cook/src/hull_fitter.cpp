@@ -380,11 +380,16 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
   apex_points_.assign(m * m, Vec2{0, 0});
   std::vector<std::vector<std::size_t>> closed;
+  // One scratch chain for every start: most starts do not close within max_verts, and only the
+  // chains that do are kept (a fresh, growing vector per start was most of the allocations of a
+  // cook).
+  std::vector<std::size_t> chain;
+  chain.reserve(std::min<std::size_t>(limits_.max_verts, m) + 2);
   for (std::size_t start = 0; start < m; ++start) {
-    std::vector<std::size_t> kept{start};
+    chain.assign(1, start);
     std::size_t current = start;
     bool is_closed = false;
-    while (kept.size() <= limits_.max_verts) {
+    while (chain.size() <= limits_.max_verts) {
       std::size_t farthest = current + 1;
       for (std::size_t j = current + 2; j <= start + m; ++j) {
         if (!apex_within(hull, current % m, j % m)) break;
@@ -394,23 +399,25 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
         is_closed = true;
         break;
       }
-      kept.push_back(farthest);
+      chain.push_back(farthest);
       current = farthest;
     }
-    if (!is_closed || kept.size() > limits_.max_verts || kept.size() < 3) continue;
-    for (std::size_t& k : kept) k %= m;
-    closed.push_back(std::move(kept));
+    if (!is_closed || chain.size() > limits_.max_verts || chain.size() < 3) continue;
+    for (std::size_t& k : chain) k %= m;
+    closed.push_back(chain);
   }
   // The same polygon comes from several starts; try each once, fewest vertices first.
   for (std::vector<std::size_t>& kept : closed)
     std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
   std::stable_sort(closed.begin(), closed.end(),
                    [](const auto& a, const auto& b) { return a.size() < b.size(); });
-  std::vector<std::vector<std::size_t>> tried;
+  std::vector<const std::vector<std::size_t>*> tried;
   for (const std::vector<std::size_t>& kept : closed) {
-    if (std::find(tried.begin(), tried.end(), kept) != tried.end()) continue;
-    tried.push_back(kept);
+    if (std::any_of(tried.begin(), tried.end(), [&](const auto* seen) { return *seen == kept; }))
+      continue;
+    tried.push_back(&kept);
     Ring polygon;
+    polygon.reserve(kept.size());
     for (std::size_t k = 0; k < kept.size(); ++k) {
       std::size_t i = kept[k], j = kept[(k + 1) % kept.size()];
       polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
