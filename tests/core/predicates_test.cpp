@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <tuple>
 
 namespace hullcook {
 namespace {
@@ -54,6 +55,38 @@ TEST(Predicates, ExactOnNearlyCollinearIntegerPoints) {
         ASSERT_EQ(orientation(b, a, c), -expected) << trial;
       });
   EXPECT_GT(degenerate, 100);  // the test does exercise exact collinearity
+}
+
+TEST(Predicates, Issue17_CollinearLatticePointsTakeTheShortcutToAnExactZero) {
+  // Traced outlines are lattice points: most exact calls of a cook are exactly collinear points
+  // whose rounded determinant is exact, and orient2d returns 0 for them without the expansion.
+  // The lattices below are scaled by powers of two from 2^-400 to 2^300 (products exact or not,
+  // far from the subnormals where no exact predicate holds), with coordinates of 12 to 50
+  // bits (differences and products exact or not).
+  for (const int scale : {-400, -200, -60, -1, 0, 30, 300}) {
+    for (const int bits : {12, 26, 40, 50}) {
+      int degenerate = 0;
+      check_nearly_collinear_triples(
+          std::uint64_t(scale * 100 + bits + 1000), bits, 64,
+          [&](int trial, Vec2 a, Vec2 b, Vec2 c, int expected) {
+            a = {std::ldexp(a.x, scale), std::ldexp(a.y, scale)};
+            b = {std::ldexp(b.x, scale), std::ldexp(b.y, scale)};
+            c = {std::ldexp(c.x, scale), std::ldexp(c.y, scale)};
+            for (const auto& [p, q, r, sign] :
+                 {std::tuple{a, b, c, expected}, std::tuple{b, c, a, expected},
+                  std::tuple{c, a, b, expected}, std::tuple{b, a, c, -expected}}) {
+              const double value = orient2d(p, q, r);
+              ASSERT_EQ((value > 0.0) - (value < 0.0), sign)
+                  << "scale 2^" << scale << ", " << bits << " bits, trial " << trial;
+              if (sign == 0) {
+                ASSERT_FALSE(std::signbit(value)) << "scale 2^" << scale << ", trial " << trial;
+              }
+            }
+            degenerate += expected == 0;
+          });
+      EXPECT_GT(degenerate, 100) << "scale 2^" << scale << ", " << bits << " bits";
+    }
+  }
 }
 
 TEST(Predicates, FilterWithinACoordinateBoundKeepsOrient2dsValues) {

@@ -52,6 +52,42 @@ double orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
   return 0.0;
 }
 
+// Whether x - y rounded to difference is exact (Knuth's two-diff error is zero).
+inline bool difference_is_exact(double x, double y, double difference) {
+  const double y_virtual = x - difference;
+  const double x_virtual = difference + y_virtual;
+  return (x - x_virtual) + (y_virtual - y) == 0.0;
+}
+
+// Whether x * y rounded to product is exact: with both factors non-zero, the product must stay
+// far above the subnormals, where the error fma recovers could round away.
+inline bool product_is_exact(double x, double y, double product) {
+  if (x == 0.0 || y == 0.0) return true;
+  return std::abs(product) > 1e-280 && std::fma(x, y, -product) == 0.0;
+}
+
+// Where orient2d_exact is exact: its six products and their errors stay clear of overflow and
+// of the subnormals.
+inline bool within_exact_range(double v) {
+  const double magnitude = std::abs(v);
+  return magnitude == 0.0 || (magnitude >= 1e-140 && magnitude <= 1e140);
+}
+
+// Exactly collinear points whose determinant was computed without a rounding (lattice points,
+// as traced outlines are, are most of the exact calls of a cook): the expansion's sum is then 0
+// too, and orient2d_exact returns 0.0 for it. This returns the same, at a tenth of the cost.
+// Out of line: the filtered path of orient2d stays as short as it was.
+[[gnu::noinline]] bool is_exact_zero(Vec2 a, Vec2 b, Vec2 c) {
+  const double ac_x = a.x - c.x, bc_y = b.y - c.y, ac_y = a.y - c.y, bc_x = b.x - c.x;
+  const double left = ac_x * bc_y, right = ac_y * bc_x;
+  return left == right && within_exact_range(a.x) && within_exact_range(a.y) &&
+         within_exact_range(b.x) && within_exact_range(b.y) && within_exact_range(c.x) &&
+         within_exact_range(c.y) && difference_is_exact(a.x, c.x, ac_x) &&
+         difference_is_exact(b.y, c.y, bc_y) && difference_is_exact(a.y, c.y, ac_y) &&
+         difference_is_exact(b.x, c.x, bc_x) && product_is_exact(ac_x, bc_y, left) &&
+         product_is_exact(ac_y, bc_x, right);
+}
+
 }  // namespace
 
 double orient2d(Vec2 a, Vec2 b, Vec2 c) {
@@ -60,6 +96,7 @@ double orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double determinant = left - right;
   const double magnitude = std::abs(left) + std::abs(right);
   if (std::abs(determinant) > detail::kOrientErrorBound * magnitude) return determinant;
+  if (determinant == 0.0 && is_exact_zero(a, b, c)) return 0.0;
   return orient2d_exact(a, b, c);
 }
 
