@@ -52,18 +52,20 @@ double orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
   return 0.0;
 }
 
-// Whether x - y rounded to difference is exact (Knuth's two-diff error is zero).
+// Whether x - y rounded to difference is exact: two-sum's error is zero.
 inline bool difference_is_exact(double x, double y, double difference) {
-  const double y_virtual = x - difference;
-  const double x_virtual = difference + y_virtual;
-  return (x - x_virtual) + (y_virtual - y) == 0.0;
+  double sum, error;
+  two_sum(x, -y, sum, error);
+  return sum == difference && error == 0.0;
 }
 
-// Whether x * y rounded to product is exact: with both factors non-zero, the product must stay
-// far above the subnormals, where the error fma recovers could round away.
+// Whether x * y rounded to product is exact: two-product's error is zero, with the product far
+// above the subnormals where that error could round away (unless a factor is zero).
 inline bool product_is_exact(double x, double y, double product) {
   if (x == 0.0 || y == 0.0) return true;
-  return std::abs(product) > 1e-280 && std::fma(x, y, -product) == 0.0;
+  double rounded, error;
+  two_product(x, y, rounded, error);
+  return rounded == product && std::abs(product) > 1e-280 && error == 0.0;
 }
 
 // Where orient2d_exact is exact: its six products and their errors stay clear of overflow and
