@@ -274,6 +274,18 @@ TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
   expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");
 }
 
+// A triangle spanning 1e-170 was refused as "fewer than 3 distinct points", and one spanning
+// 1e-158 broke the output's contract (exit 4, an internal error): both are bad input, named.
+TEST_F(CookCli, TinyCoordinatesAreBadInputNamedAsTooSmall) {
+  const fs::path tiny = write("tiny.poly", "1\n3 out\n0 0\n1e-170 0\n0 1e-170\n1 2 3\n");
+  expect_bad_input(tiny, "too small");
+  fs::remove(tiny);
+  expect_bad_input(write("small.poly",
+                         "1\n4 out\n0 0\n3e-158 0\n2e-158 1e-158\n0 3e-158\n"
+                         "1 2 3 4\n"),
+                   "too small");
+}
+
 // Issue 19: the same inputs give the same bytes from any working directory, by a relative or an
 // absolute path.
 TEST_F(CookCli, Issue19_OutputDoesNotDependOnTheWorkingDirectory) {

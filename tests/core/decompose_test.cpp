@@ -293,5 +293,53 @@ TEST(Decompose, HoleIsKeptOnlyWithinTolerance) {
   for (const Piece& piece : opened) EXPECT_TRUE(piece.component.holes.empty());
 }
 
+// Models scaled towards either end of the coordinates .poly files accept (spans from 1e-140,
+// coordinates to 1e150) decompose within the contract. Before the enclosing circle was computed
+// on scaled differences, τ = 1% of R was 0 for the monkey at 1e-140 (445 pieces instead of 105)
+// and infinite at 1e140 (1 piece). Scaling by a power of two is exact, so the pieces are checked
+// scaled back, at the model's own size (where the contract's tolerances mean what they say). The
+// pieces are not the model's scaled bit for bit: Eq. 8 scores a diagonal by 1 + sc concave(x),
+// which mixes a pure number with a length, so the diagonals chosen depend on the units.
+TEST(Decompose, ModelsScaledTowardsTheCoordinateBoundsKeepTheContract) {
+  for (const char* file : {"nazca/nazca_monkey.poly", "neuron/neuron.poly", "misc/hole3.poly"}) {
+    const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/polygons" / file;
+    const std::vector<Region> regions = read_poly_file(path);
+    ASSERT_EQ(regions.size(), 1u) << file;
+    const double radius = enclosing_radius(regions), tau = 0.01 * radius;
+    for (Measure measure : {Measure::sl, Measure::h1}) {
+      const std::size_t unscaled_count =
+          decompose(regions[0], {tau, measure, 0.1, 1.0}).pieces_at(tau).size();
+      for (int exponent : {-440, 440}) {
+        const std::string what = std::string(file) + " " + measure_name(measure) + " scaled by 2^" +
+                                 std::to_string(exponent);
+        auto scale_ring = [](Ring ring, int by) {
+          for (Vec2& p : ring) p = {std::ldexp(p.x, by), std::ldexp(p.y, by)};
+          return ring;
+        };
+        Region scaled{scale_ring(regions[0].outer, exponent), {}};
+        for (const Ring& hole : regions[0].holes)
+          scaled.holes.push_back(scale_ring(hole, exponent));
+        // Cleaned as a file holding the scaled model would be.
+        const std::vector<Region> cleaned = clean_and_validate({scaled}, what);
+        ASSERT_EQ(cleaned.size(), 1u);
+        const double scaled_radius = enclosing_radius(cleaned);
+        ASSERT_EQ(scaled_radius, std::ldexp(radius, exponent)) << what;
+        const double scaled_tau = 0.01 * scaled_radius;
+        std::vector<Piece> pieces =
+            decompose(cleaned[0], {scaled_tau, measure, 0.1, 1.0}).pieces_at(scaled_tau);
+        for (Piece& piece : pieces) {
+          piece.component.outer = scale_ring(piece.component.outer, -exponent);
+          for (Ring& hole : piece.component.holes) hole = scale_ring(hole, -exponent);
+          piece.hull = scale_ring(piece.hull, -exponent);
+          piece.concavity = std::ldexp(piece.concavity, -exponent);
+        }
+        expect_contract(regions[0], pieces, tau, measure, what, 100);
+        EXPECT_LE(pieces.size(), unscaled_count * 11 / 10) << what;
+        EXPECT_GE(pieces.size(), unscaled_count * 9 / 10) << what;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

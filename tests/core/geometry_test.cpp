@@ -105,5 +105,31 @@ TEST(Geometry, MinimumEnclosingCircleMatchesBruteForce) {
   }
 }
 
+// Before the centre was computed on differences scaled by a power of two, its products of three
+// coordinate differences overflowed beyond about 1e100 (R came back infinite, and τ = 1% of R with
+// it) and underflowed below about 1e-100 (R = 0). Scaling by a power of two is exact, so the circle
+// of scaled points is the circle of the points scaled, bit for bit.
+TEST(Geometry, MinimumEnclosingCircleScalesExactlyWithItsPoints) {
+  std::mt19937 random(12);
+  std::normal_distribution<double> normal(0.0, 100.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    Ring points;
+    for (int i = 0; i < 40; ++i) points.push_back({normal(random), normal(random)});
+    const Circle circle = minimum_enclosing_circle(points);
+    ASSERT_GT(circle.radius, 0.0);
+    for (int exponent : {-450, -300, -120, 120, 300, 480}) {
+      Ring scaled = points;
+      for (Vec2& p : scaled) p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent)};
+      const Circle expected{
+          {std::ldexp(circle.center.x, exponent), std::ldexp(circle.center.y, exponent)},
+          std::ldexp(circle.radius, exponent)};
+      const Circle found = minimum_enclosing_circle(scaled);
+      EXPECT_EQ(found.radius, expected.radius) << "trial " << trial << ", 2^" << exponent;
+      EXPECT_EQ(found.center.x, expected.center.x) << "trial " << trial << ", 2^" << exponent;
+      EXPECT_EQ(found.center.y, expected.center.y) << "trial " << trial << ", 2^" << exponent;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

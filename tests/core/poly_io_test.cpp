@@ -123,6 +123,33 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("missing.poly/nope", ""), HasSubstr("missing.poly"));
 }
 
+// Below a span of 1e-140 the orientation tests' products of differences reach the subnormal range:
+// such rings were cleaned away as "fewer than 3 distinct points", or decomposed into pieces that
+// broke the output's contract (exit 4). They are refused by name, and rings just above are kept.
+TEST(PolyIo, RefusesRingsTooSmallToOrientExactly) {
+  EXPECT_THAT(error_of("tiny.poly",
+                       "1\n4 out\n0 0\n3e-170 0\n3e-170 1e-170\n1e-170 2e-170\n"
+                       "1 2 3 4\n"),
+              AllOf(HasSubstr("tiny.poly"), HasSubstr("region 1 outer boundary: too small"),
+                    HasSubstr("3e-170")));
+  EXPECT_THAT(error_of("tinyhole.poly",
+                       "2\n4 out\n-1 -1\n1 -1\n1 1\n-1 1\n1 2 3 4\n"
+                       "3 in\n0 0\n0 1e-150\n1e-150 0\n1 2 3\n"),
+              AllOf(HasSubstr("tinyhole.poly"), HasSubstr("region 1 hole 1: too small"),
+                    HasSubstr("1e-150")));
+  const auto small = write_temp("small.poly",
+                                "2\n4 out\n0 0\n4e-140 0\n4e-140 4e-140\n0 4e-140\n1 2 3 4\n"
+                                "4 in\n1e-140 1e-140\n1e-140 3e-140\n3e-140 3e-140\n"
+                                "3e-140 1e-140\n1 2 3 4\n");
+  const std::vector<Region> regions = read_poly_file(small);
+  std::filesystem::remove(small);
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_EQ(regions[0].outer.size(), 4u);
+  ASSERT_EQ(regions[0].holes.size(), 1u);
+  EXPECT_EQ(regions[0].holes[0].size(), 4u);
+  EXPECT_GT(region_area(regions[0]), 0.0);
+}
+
 // The description of the value expected is built only when a token is wrong (issue 22: building
 // it for every number was most of a .poly's parsing time); each still names its token.
 TEST(PolyIo, Issue22_EachWrongTokenIsNamedByLineChainAndPlace) {

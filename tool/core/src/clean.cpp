@@ -50,6 +50,12 @@ Ring remove_degenerate_vertices(const Ring& ring) {
 
 namespace {
 
+std::string format_number(double value) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
 std::string format_point(Vec2 p) {
   char buffer[80];
   std::snprintf(buffer, sizeof buffer, "(%.9g, %.9g)", p.x, p.y);
@@ -226,6 +232,10 @@ Box box_of(const Ring& ring) {
 }
 
 constexpr double kLargestCoordinate = 1e150;
+// Below it the orientation predicates' products of coordinate differences reach the subnormal
+// range, where their exact error terms round away: a ring that small decomposed into different,
+// and below about 1e-155 invalid, pieces than the same ring scaled up.
+constexpr double kSmallestSpan = 1e-140;
 
 }  // namespace
 
@@ -254,6 +264,15 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
         if (std::abs(ring[i].x) > kLargestCoordinate || std::abs(ring[i].y) > kLargestCoordinate) {
           fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
                " has a coordinate too large (beyond 1e150 in magnitude)");
+        }
+      }
+      if (!ring.empty()) {
+        const Box box = box_of(ring);
+        const double span = std::max(box.max_x - box.min_x, box.max_y - box.min_y);
+        if (span > 0.0 && span < kSmallestSpan) {
+          fail(ring_name(ring_index) + ": too small: it spans " + format_number(span) +
+               " (less than 1e-140), beyond the precision of its orientation tests; scale its "
+               "coordinates up");
         }
       }
       ring = remove_degenerate_vertices(ring);

@@ -339,8 +339,17 @@ double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 Circle circle_of_two(Vec2 a, Vec2 b) { return {(a + b) * 0.5, distance(a, b) * 0.5}; }
 
 Circle circle_of_three(Vec2 a, Vec2 b, Vec2 c) {
-  const Vec2 ab = b - a;
-  const Vec2 ac = c - a;
+  // The centre's formula multiplies three coordinate differences: beyond about 1e100 that
+  // overflows, below about 1e-100 it underflows (R became inf or 0, and τ = 1% of R with it). It
+  // is evaluated on the differences scaled by a power of two to near 1, which is exact: within the
+  // range where nothing overflowed or underflowed, every value is bit for bit what it was.
+  const Vec2 unscaled_ab = b - a, unscaled_ac = c - a;
+  const double largest = std::max({std::abs(unscaled_ab.x), std::abs(unscaled_ab.y),
+                                   std::abs(unscaled_ac.x), std::abs(unscaled_ac.y)});
+  if (!(largest > 0.0) || !std::isfinite(largest)) return circle_of_two(a, b);
+  const int exponent = std::ilogb(largest);
+  const Vec2 ab{std::ldexp(unscaled_ab.x, -exponent), std::ldexp(unscaled_ab.y, -exponent)};
+  const Vec2 ac{std::ldexp(unscaled_ac.x, -exponent), std::ldexp(unscaled_ac.y, -exponent)};
   const double d = 2.0 * (ab.x * ac.y - ab.y * ac.x);
   if (d == 0.0) {
     // Collinear: the circle on the two farthest points.
@@ -352,7 +361,8 @@ Circle circle_of_three(Vec2 a, Vec2 b, Vec2 c) {
   }
   const double ab2 = ab.x * ab.x + ab.y * ab.y;
   const double ac2 = ac.x * ac.x + ac.y * ac.y;
-  const Vec2 offset{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
+  const Vec2 offset{std::ldexp((ac.y * ab2 - ab.y * ac2) / d, exponent),
+                    std::ldexp((ab.x * ac2 - ac.x * ab2) / d, exponent)};
   return {a + offset, std::hypot(offset.x, offset.y)};
 }
 
