@@ -1,4 +1,6 @@
 #include "contract.h"
+#include "hull_fitter.h"
+#include "outline_distance.h"
 
 #include "hullcook/cook/constrain.h"
 #include "hullcook/core/decompose.h"
@@ -8,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace hullcook {
 namespace {
@@ -193,6 +196,51 @@ TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {
   EXPECT_FALSE(hull_meets_limits(regular_polygon(5, 1), limits));             // too many
   EXPECT_FALSE(hull_meets_limits({{0, 0}, {1, 0}, {1, 0.5}, {1, 1}}, EngineLimits{8, 0.01}));
   EXPECT_FALSE(hull_meets_limits({{0, 0}, {1, 0}, {1, 0.001}, {0, 1}}, limits));  // weld
+}
+
+// Issue 17: where the fitter's reach is its own component (inside every hull it grows), an apex
+// further beyond the line of an edge it cuts off than τ is refused without the outline query. The
+// shortcut must change nothing: on the pieces of seeded random star polygons, at several vertex
+// limits and tolerances, the fit with it equals the fit with the query alone (the same reach,
+// declared as an outline).
+TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> wobble(-1.0, 1.0);
+  int reduced = 0, compared = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Ring star;
+    const int n = 40 + trial * 3;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * i / n;
+      const double radius = 50 + 12 * wobble(random) + 20 * std::sin(3 * angle);
+      star.push_back(radius * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    for (double tau : {0.5, 2.0, 6.0}) {
+      for (std::size_t max_verts : {8u, 6u, 4u}) {
+        const EngineLimits limits{max_verts, 0.005};
+        for (const CookedPiece& piece : decompose_at(Region{star, {}}, tau)) {
+          if (piece.hull.size() <= max_verts) continue;
+          const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
+          const OutlineDistance reach({&piece.component});
+          const bool edges_suffice = pockets_within(piece.component, piece.hull, tau);
+          HullFitter with_shortcut(piece.component, allowed, reach, HullFitter::Reach::component,
+                                   edges_suffice, tau, limits);
+          HullFitter query_only(piece.component, allowed, reach, HullFitter::Reach::outline,
+                                edges_suffice, tau, limits);
+          const std::optional<Ring> fast = with_shortcut.fit(piece.hull);
+          const std::optional<Ring> slow = query_only.fit(piece.hull);
+          ++compared;
+          ASSERT_EQ(fast.has_value(), slow.has_value()) << "trial " << trial << ", tau " << tau;
+          if (fast) {
+            ++reduced;
+            EXPECT_EQ(*fast, *slow) << "trial " << trial << ", tau " << tau;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100);
+  EXPECT_GT(reduced, 100);
 }
 
 }  // namespace

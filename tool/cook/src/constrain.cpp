@@ -99,7 +99,8 @@ class Constrainer {
     std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);
     OutlineDistance reach({&piece.component});
     bool edges_suffice = pockets_within(piece.component, piece.hull, tau_);
-    HullFitter fitter(piece.component, allowed, reach, edges_suffice, tau_, limits_);
+    HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component, edges_suffice,
+                      tau_, limits_);
     if (std::optional<Ring> hull = fitter.fit(piece.hull)) {
       slots_.push_back({std::move(piece), std::move(*hull), true});
       return;
@@ -194,7 +195,7 @@ class Constrainer {
       start = convex_hull(start);
       std::vector<double> allowed = merged_depths(merged, slots_[k], neighbour);
       OutlineDistance reach({&merged});
-      HullFitter fitter(merged, allowed, reach, true, tau_, limits_);
+      HullFitter fitter(merged, allowed, reach, HullFitter::Reach::component, true, tau_, limits_);
       if (!fitter.holds_component(start) || !fitter.growth_within(start, merged_hull)) continue;
       std::optional<Ring> hull = fitter.fit(start);
       if (!hull) continue;
@@ -252,7 +253,8 @@ class Constrainer {
     const Ring& known = slot.piece.hull;
     bool known_inside = known.size() >= 3 && signed_area(known) > 0;
     std::vector<double> allowed = allowed_depths(slot.piece.component, known, tau_);
-    HullFitter fitter(slot.piece.component, allowed, *outline_, false, tau_, limits_);
+    HullFitter fitter(slot.piece.component, allowed, *outline_, HullFitter::Reach::outline, false,
+                      tau_, limits_);
     for (Ring& candidate : small_hulls(slot.piece.component.outer, limits_)) {
       if (!hull_meets_limits(candidate, limits_) || !fitter.holds_component(candidate) ||
           !fitter.growth_within(candidate, known_inside ? known : Ring{})) {

@@ -446,7 +446,8 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
       Vec2 apex = a + first * t;
       bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t) &&
                    (!limits_.keep_inside || limits_.keep_inside->holds(apex));
-      double at_apex = ahead ? reach_.distance(apex, bound_) : bound_ + 1;
+      double at_apex =
+          ahead && !clearly_beyond(hull, i, j, apex) ? reach_.distance(apex, bound_) : bound_ + 1;
       // Distance is 1-Lipschitz: a segment whose ends' distances and half its length stay within
       // bound needs no closer look.
       auto within = [&](Vec2 corner, double at_corner) {
@@ -461,6 +462,25 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
     }
   }
   return state == ApexState::within;
+}
+
+// Whether the apex of edges i and j lies, by its distance beyond the line of an edge it cuts off,
+// further than bound from the component: the hull being reduced holds the component, so that
+// distance bounds the distance to it from below. Most apexes that fail are settled here, without
+// the outline query (a point-in-outline ray cast and a search of cells). The margin keeps the
+// answer the query's wherever the two round differently.
+bool HullFitter::clearly_beyond(const Ring& hull, std::size_t i, std::size_t j, Vec2 apex) const {
+  if (!reach_is_component_) return false;
+  const std::size_t m = hull.size();
+  for (std::size_t k = (i + 1) % m; k != j; k = (k + 1) % m) {
+    const Vec2 from = hull[k], edge = hull[(k + 1) % m] - from, offset = apex - from;
+    // |edge| times the apex's distance beyond the edge's line (the hull is counter-clockwise).
+    const double outward = -cross(edge, offset);
+    if (outward > glm::length(edge) * (bound_ * (1 + 1e-6) + 1e-9 * glm::length(offset))) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace hullcook

@@ -31,16 +31,19 @@ bool pockets_within(const Region& component, const Ring& hull, double bound);
 
 class HullFitter {
  public:
-  // reach: the distances hull points are bounded in (to the component itself, or to the whole
-  // outline); bound: how far [output units] a hull point may lie; edges_suffice: whether the new
-  // edges alone prove new area within bound (see pockets_within), else cells prove it too;
-  // allowed: as from allowed_depths. The references must outlive the fitter.
+  // What the distances of hull points are bounded in: the component itself, or the whole outline.
+  enum class Reach { component, outline };
+  // reach: that outline or component (as reach_kind says); bound: how far [output units] a hull
+  // point may lie; edges_suffice: whether the new edges alone prove new area within bound (see
+  // pockets_within), else cells prove it too; allowed: as from allowed_depths. The references
+  // must outlive the fitter.
   HullFitter(const Region& component, const std::vector<double>& allowed,
-             const OutlineDistance& reach, bool edges_suffice, double bound,
+             const OutlineDistance& reach, Reach reach_kind, bool edges_suffice, double bound,
              const EngineLimits& limits)
       : component_(component),
         allowed_(allowed),
         reach_(reach),
+        reach_is_component_(reach_kind == Reach::component),
         edges_suffice_(edges_suffice),
         bound_(bound),
         limits_(limits) {}
@@ -71,12 +74,14 @@ class HullFitter {
   std::optional<Ring> mend_local_violations(Ring hull) const;
   std::optional<Ring> reduce_vertex_count(const Ring& hull);
   bool apex_within(const Ring& hull, std::size_t i, std::size_t j);
+  bool clearly_beyond(const Ring& hull, std::size_t i, std::size_t j, Vec2 apex) const;
 
   enum class ApexState : unsigned char { unknown, within, beyond };
 
   const Region& component_;
   const std::vector<double>& allowed_;
   const OutlineDistance& reach_;
+  bool reach_is_component_;
   bool edges_suffice_;
   double bound_;
   EngineLimits limits_;
