@@ -256,6 +256,17 @@ class AssetDecomposer {
     return pieces;
   }
 
+  // The same, for the last level read: the pieces' components are moved out of the trees.
+  std::vector<Piece> take_pieces_at(double tau) {
+    std::vector<Piece> pieces;
+    for (DecompositionTree& tree : trees_) {
+      std::vector<Piece> part = std::move(tree).pieces_at(tau);
+      std::move(part.begin(), part.end(), std::back_inserter(pieces));
+    }
+    trees_.clear();
+    return pieces;
+  }
+
   std::size_t piece_count_at(double tau) const {
     std::size_t count = 0;
     for (const DecompositionTree& tree : trees_) count += tree.piece_count_at(tau);
@@ -507,7 +518,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   // of thousands of blobs).
   std::vector<std::vector<Piece>> level_pieces;
   level_pieces.reserve(level_taus.size());
-  for (double tau : level_taus) level_pieces.push_back(decomposer->pieces_at(tau));
+  for (std::size_t l = 0; l < level_taus.size(); ++l) {
+    level_pieces.push_back(l + 1 < level_taus.size() ? decomposer->pieces_at(level_taus[l])
+                                                     : decomposer->take_pieces_at(level_taus[l]));
+  }
   decomposer.reset();
   asset.stats.decompose_ms = milliseconds_since(decompose_start);
   std::vector<std::string> violations;

@@ -51,13 +51,14 @@ namespace {
 
 using namespace detail;
 
-Piece make_piece(const Region& component, double concavity) {
+Piece make_piece(Region component, double concavity) {
   const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(component.outer));
+  thread_local std::vector<std::size_t> indices;
+  simple_polygon_hull_indices(component.outer, component.outer.size(), indices);
   Ring hull;
-  for (std::size_t index : simple_polygon_hull_indices(component.outer)) {
-    hull.push_back(component.outer[index]);
-  }
-  return Piece{component, std::move(hull), concavity};
+  hull.reserve(indices.size());
+  for (std::size_t index : indices) hull.push_back(component.outer[index]);
+  return Piece{std::move(component), std::move(hull), concavity};
 }
 
 }  // namespace
@@ -160,19 +161,35 @@ std::size_t DecompositionTree::piece_count_at(double tau) const {
   return count;
 }
 
-std::vector<Piece> DecompositionTree::pieces_at(double tau) const {
-  std::vector<Piece> pieces;
+template <typename Take>
+void DecompositionTree::for_each_piece_at(double tau, Take take) const {
   std::vector<int> stack{0};
   while (!stack.empty()) {
-    const Node& node = nodes_[std::size_t(stack.back())];
+    const int id = stack.back();
     stack.pop_back();
+    const Node& node = nodes_[std::size_t(id)];
     if (node.is_leaf() || node.concavity <= tau) {
-      pieces.push_back(make_piece(node.component, node.concavity));
+      take(std::size_t(id));
     } else {
       stack.push_back(node.children[1]);
       stack.push_back(node.children[0]);
     }
   }
+}
+
+std::vector<Piece> DecompositionTree::pieces_at(double tau) const& {
+  std::vector<Piece> pieces;
+  for_each_piece_at(tau, [&](std::size_t id) {
+    pieces.push_back(make_piece(nodes_[id].component, nodes_[id].concavity));
+  });
+  return pieces;
+}
+
+std::vector<Piece> DecompositionTree::pieces_at(double tau) && {
+  std::vector<Piece> pieces;
+  for_each_piece_at(tau, [&](std::size_t id) {
+    pieces.push_back(make_piece(std::move(nodes_[id].component), nodes_[id].concavity));
+  });
   return pieces;
 }
 

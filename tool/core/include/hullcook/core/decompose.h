@@ -55,7 +55,10 @@ class DecompositionTree {
   // The decomposition for any τ' >= built_tau(): leaves of the tree cut where concavity <= τ'.
   // For SL, SP and H1 this equals a fresh decompose() at τ'. For H2 (whose witness depends on τ)
   // every piece still has concavity <= τ'. Pieces come in depth-first order of the tree.
-  std::vector<Piece> pieces_at(double tau) const;
+  std::vector<Piece> pieces_at(double tau) const&;
+  // The same, moving the pieces' components out of a tree that is not used again (copying them
+  // was a tenth of a cook's allocations).
+  std::vector<Piece> pieces_at(double tau) &&;
 
   // The finest level with at most max_pieces pieces (max_pieces 0 is treated as 1).
   std::vector<Piece> pieces_within(std::size_t max_pieces) const;
@@ -73,6 +76,9 @@ class DecompositionTree {
 
  private:
   friend DecompositionTree decompose(const Region&, const DecomposeSettings&);
+  // Calls take(node) for each node that is a piece at tau, in depth-first order.
+  template <typename Take>
+  void for_each_piece_at(double tau, Take take) const;
   std::vector<Node> nodes_;
   double tau_ = 0.0;
   Measure measure_ = Measure::h1;
