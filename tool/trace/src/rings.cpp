@@ -96,6 +96,8 @@ class Simplifier {
   std::vector<Ring> current() const {
     std::vector<Ring> result(rings_.size());
     for (std::size_t r = 0; r < rings_.size(); ++r) {
+      result[r].reserve(static_cast<std::size_t>(
+          std::count_if(keep_[r].begin(), keep_[r].end(), [](auto keep) { return keep != 0; })));
       for (std::size_t i = 0; i < rings_[r].size(); ++i) {
         if (keep_[r][i]) result[r].push_back(rings_[r][i]);
       }
@@ -287,18 +289,26 @@ class Simplifier {
 // Drops vertices on the straight line through their neighbours (within rounding), which does not
 // move the outline; a ring keeps at least 3 vertices.
 Ring without_collinear(Ring ring) {
-  bool changed = true;
+  // Most rings have no straight vertex left: those are returned as they are, without a copy.
+  auto straight_at = [&](Vec2 previous, std::size_t i) {
+    const std::size_t n = ring.size();
+    Vec2 in = ring[i] - previous, out = ring[(i + 1) % n] - ring[i];
+    return std::abs(cross(in, out)) <= 1e-12 * glm::length(in) * glm::length(out) &&
+           glm::dot(in, out) > 0;
+  };
+  bool any_straight = false;
+  for (std::size_t i = 0, n = ring.size(); i < n && n > 3 && !any_straight; ++i) {
+    any_straight = straight_at(ring[(i + n - 1) % n], i);
+  }
+  bool changed = any_straight;
   while (changed && ring.size() > 3) {
     changed = false;
     Ring kept;
+    kept.reserve(ring.size());
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
       Vec2 previous = kept.empty() ? ring[(i + n - 1) % n] : kept.back();
-      Vec2 next = ring[(i + 1) % n];
-      Vec2 in = ring[i] - previous, out = next - ring[i];
-      bool straight = std::abs(cross(in, out)) <= 1e-12 * glm::length(in) * glm::length(out) &&
-                      glm::dot(in, out) > 0;
-      if (straight && n - (i - kept.size()) > 3) {
+      if (straight_at(previous, i) && n - (i - kept.size()) > 3) {
         changed = true;
         continue;
       }
