@@ -378,13 +378,14 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   apex_cache_.assign(m * m, ApexState::unknown);
   corner_reach_.resize(m);
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
-  apex_points_.assign(m * m, Vec2{0, 0});
-  std::vector<std::vector<std::size_t>> closed;
-  // One scratch chain for every start: most starts do not close within max_verts, and only the
-  // chains that do are kept (a fresh, growing vector per start was most of the allocations of a
-  // cook).
-  std::vector<std::size_t> chain;
-  chain.reserve(std::min<std::size_t>(limits_.max_verts, m) + 2);
+  // Read only where apex_cache_ says within, which apex_within writes together with the point.
+  apex_points_.resize(m * m);
+  // The chains that close, one after the other in closed_, each a span of it (a vector per chain
+  // was a tenth of the allocations of a cook).
+  closed_.clear();
+  closed_spans_.clear();
+  // One scratch chain for every start: most starts do not close within max_verts.
+  std::vector<std::size_t>& chain = chain_;
   for (std::size_t start = 0; start < m; ++start) {
     chain.assign(1, start);
     std::size_t current = start;
@@ -404,22 +405,31 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
     }
     if (!is_closed || chain.size() > limits_.max_verts || chain.size() < 3) continue;
     for (std::size_t& k : chain) k %= m;
-    closed.push_back(chain);
+    // The same polygon comes from several starts: each starts at its least index, to compare.
+    std::rotate(chain.begin(), std::min_element(chain.begin(), chain.end()), chain.end());
+    closed_spans_.push_back({closed_.size(), chain.size()});
+    closed_.insert(closed_.end(), chain.begin(), chain.end());
   }
-  // The same polygon comes from several starts; try each once, fewest vertices first.
-  for (std::vector<std::size_t>& kept : closed)
-    std::rotate(kept.begin(), std::min_element(kept.begin(), kept.end()), kept.end());
-  std::stable_sort(closed.begin(), closed.end(),
-                   [](const auto& a, const auto& b) { return a.size() < b.size(); });
-  std::vector<const std::vector<std::size_t>*> tried;
-  for (const std::vector<std::size_t>& kept : closed) {
-    if (std::any_of(tried.begin(), tried.end(), [&](const auto* seen) { return *seen == kept; }))
+  // Each polygon is tried once, fewest vertices first.
+  std::stable_sort(closed_spans_.begin(), closed_spans_.end(),
+                   [](const auto& a, const auto& b) { return a.second < b.second; });
+  auto same = [&](const std::pair<std::size_t, std::size_t>& a,
+                  const std::pair<std::size_t, std::size_t>& b) {
+    return a.second == b.second &&
+           std::equal(closed_.begin() + a.first, closed_.begin() + a.first + a.second,
+                      closed_.begin() + b.first);
+  };
+  for (std::size_t c = 0; c < closed_spans_.size(); ++c) {
+    if (std::any_of(closed_spans_.begin(), closed_spans_.begin() + c,
+                    [&](const auto& seen) { return same(seen, closed_spans_[c]); })) {
       continue;
-    tried.push_back(&kept);
+    }
+    const std::size_t* kept = closed_.data() + closed_spans_[c].first;
+    const std::size_t size = closed_spans_[c].second;
     Ring polygon;
-    polygon.reserve(kept.size());
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-      std::size_t i = kept[k], j = kept[(k + 1) % kept.size()];
+    polygon.reserve(size);
+    for (std::size_t k = 0; k < size; ++k) {
+      std::size_t i = kept[k], j = kept[(k + 1) % size];
       polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
     }
     // The new edges are the stretches apex_within checked.
