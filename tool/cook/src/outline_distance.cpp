@@ -152,7 +152,13 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
     add_ring(region.outer, add);
     for (const Ring& hole : region.holes) add_ring(hole, add);
   };
+  std::size_t edge_count = 0;
+  for (const Region* component : components) {
+    edge_count += component->outer.size();
+    for (const Ring& hole : component->holes) edge_count += hole.size();
+  }
   if (components.size() == 1) {
+    edges_.reserve(edge_count);
     add_region(*components[0], [&](Vec2 a, Vec2 b) { edges_.push_back({a, b}); });
   } else {
     // A cut is an edge of two components in opposite directions: sort the edges by their
@@ -162,6 +168,7 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
       bool forward;
     };
     std::vector<Directed> directed;
+    directed.reserve(edge_count);
     for (const Region* component : components) {
       add_region(*component, [&](Vec2 a, Vec2 b) {
         bool forward = std::tie(a.x, a.y) < std::tie(b.x, b.y);
@@ -223,8 +230,10 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
   for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
   cell_edges_.resize(cell_start_.back());
   row_edges_.resize(row_start_.back());
-  std::vector<std::uint32_t> cell_fill(cell_start_.begin(), cell_start_.end() - 1);
-  std::vector<std::uint32_t> row_fill(row_start_.begin(), row_start_.end() - 1);
+  // Scratch, reused: a cook builds one of these for most pieces.
+  thread_local std::vector<std::uint32_t> cell_fill, row_fill;
+  cell_fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+  row_fill.assign(row_start_.begin(), row_start_.end() - 1);
   for_each_place([&](std::size_t cell, std::uint32_t k) { cell_edges_[cell_fill[cell]++] = k; },
                  [&](std::size_t row, std::uint32_t k) { row_edges_[row_fill[row]++] = k; });
   visited_.assign(edges_.size(), 0);
