@@ -100,7 +100,9 @@ class EdgeGrid {
     for (const Edge& e : edges) for_each_cell(e, [&](std::size_t cell) { ++start_[cell + 1]; });
     for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
     entries_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    // Scratch, reused: the contract check validates most pieces of a cook this way.
+    thread_local std::vector<std::size_t> fill;
+    fill.assign(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       for_each_cell(edges[i], [&](std::size_t cell) { entries_[fill[cell]++] = i; });
     }
@@ -275,7 +277,7 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
                "coordinates up");
         }
       }
-      ring = remove_degenerate_vertices(ring);
+      remove_degenerate_vertices_in_place(ring);
       if (ring.size() < 3) {
         fail(ring_name(ring_index) +
              ": fewer than 3 distinct points after removing repeated and collinear vertices");
@@ -293,6 +295,10 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
 
     std::vector<Edge> edges;
     std::vector<std::size_t> ring_sizes;
+    std::size_t edge_count = region.outer.size();
+    for (const Ring& hole : region.holes) edge_count += hole.size();
+    edges.reserve(edge_count);
+    ring_sizes.reserve(1 + region.holes.size());
     auto add_edges = [&](const Ring& ring, int ring_index) {
       ring_sizes.push_back(ring.size());
       for (std::size_t i = 0; i < ring.size(); ++i) {
