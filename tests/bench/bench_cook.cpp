@@ -9,7 +9,8 @@
 //   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent).
 // On samples/sprites and on a synthetic set written here (many sizes, holes, many blobs).
 // Options: --runs N (repetitions, default 5), --quick (fewer and smaller images),
-// --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it); any
+// --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it),
+// --write-docs DIR (also put this run's report in DIR/benchmarks.md, between its markers); any
 // other option (scripts/bench passes Google Benchmark's) is ignored.
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
@@ -28,13 +29,16 @@
 #include <chrono>
 #include <cmath>
 #include <csetjmp>
+#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -45,6 +49,45 @@ namespace fs = std::filesystem;
 using namespace hullcook;
 
 namespace {
+
+// Everything the run prints, also kept for --write-docs.
+std::string g_report;
+
+__attribute__((format(printf, 1, 2))) void report(const char* format, ...) {
+  va_list arguments, again;
+  va_start(arguments, format);
+  va_copy(again, arguments);
+  const int size = std::vsnprintf(nullptr, 0, format, arguments);
+  va_end(arguments);
+  std::string text(static_cast<std::size_t>(std::max(size, 0)), '\0');
+  std::vsnprintf(text.data(), text.size() + 1, format, again);
+  va_end(again);
+  std::fputs(text.c_str(), stdout);
+  g_report += text;
+}
+
+// Replaces the part of DIR/benchmarks.md between bench_cook's markers with this run's report.
+void write_docs(const fs::path& directory) {
+  const fs::path page = directory / "benchmarks.md";
+  std::ifstream in(page);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string begin = "<!-- bench_cook: generated from here -->\n";
+  const std::string end = "<!-- bench_cook: generated up to here -->";
+  const std::size_t from = text.find(begin), to = text.find(end);
+  if (from == std::string::npos || to == std::string::npos || to < from) {
+    std::fprintf(stderr, "bench_cook: %s has no bench_cook markers\n", page.string().c_str());
+    std::exit(1);
+  }
+  const std::time_t now = std::time(nullptr);
+  char date[16];
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+  const std::string generated = "\nMeasured " + std::string(date) +
+                                " by one run of `bench_cook` (`scripts/bench --write-docs`):\n\n"
+                                "```text\n" +
+                                g_report + "```\n\n";
+  text.replace(from + begin.size(), to - from - begin.size(), generated);
+  std::ofstream(page) << text;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -369,15 +412,15 @@ void print_startup(const fs::path& scratch, int runs) {
       rss[c] = std::max(rss[c], run.max_rss_mb);
     }
   }
-  std::printf("\n1. Process start-up (%d runs each, interleaved; wall ms: median [p10 .. p90])\n",
-              runs * 8);
+  report("\n1. Process start-up (%d runs each, interleaved; wall ms: median [p10 .. p90])\n",
+         runs * 8);
   const double base = median(times[0]);
   const char* names[] = {"/bin/true", "hullcook --version", "hullcook cook 64x64 -> .hcb"};
   const char* targets[] = {"", "<= 15 ms above /bin/true", "<= 25 ms above /bin/true"};
   for (std::size_t c = 0; c < commands.size(); ++c) {
-    std::printf("   %-30s %7.2f [%6.2f .. %6.2f]  above true %+7.2f  peak RSS %5.1f MB  %s\n",
-                names[c], median(times[c]), quantile(times[c], 0.1), quantile(times[c], 0.9),
-                median(times[c]) - base, rss[c], targets[c]);
+    report("   %-30s %7.2f [%6.2f .. %6.2f]  above true %+7.2f  peak RSS %5.1f MB  %s\n", names[c],
+           median(times[c]), quantile(times[c], 0.1), quantile(times[c], 0.9),
+           median(times[c]) - base, rss[c], targets[c]);
   }
 }
 
@@ -447,7 +490,7 @@ Settings cook_settings(unsigned threads) {
 
 void print_set(const std::string& title, const std::vector<fs::path>& files,
                const fs::path& scratch, int runs) {
-  std::printf("\n== %s: %zu images\n", title.c_str(), files.size());
+  report("\n== %s: %zu images\n", title.c_str(), files.size());
   double floor_ms = 0, decode_ms = 0, largest_image_mb = 0;
   std::string forms;
   for (const fs::path& file : files) {
@@ -469,12 +512,12 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
       forms += line;
     }
   }
-  std::printf("2. Decode floor (libpng/libwebp alone, best of %d): %8.2f ms\n", runs, floor_ms);
-  std::printf(
+  report("2. Decode floor (libpng/libwebp alone, best of %d): %8.2f ms\n", runs, floor_ms);
+  report(
       "   hullcook's decoding (alpha only):          %8.2f ms  = %.2fx the floor"
       "   (target <= 1.2x)\n",
       decode_ms, decode_ms / floor_ms);
-  std::printf("%s", forms.c_str());
+  report("%s", forms.c_str());
 
   // Stages inside cook(), one thread: each asset's best run.
   std::vector<CookedStats> best;
@@ -517,15 +560,14 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
   }
   rest = std::max(0.0, rest - clean);
   const double after = trace + decompose + clean + rest + write;
-  std::printf("3. Stages after decoding, one thread (ms, and x the decode floor):\n");
-  std::printf("   trace (march, nesting, simplify)  %8.2f  %5.2fx\n", trace, trace / floor_ms);
-  std::printf("   decompose                         %8.2f  %5.2fx\n", decompose,
-              decompose / floor_ms);
-  std::printf("   clean (validation)                %8.2f  %5.2fx\n", clean, clean / floor_ms);
-  std::printf("   engine limits + other             %8.2f  %5.2fx\n", rest, rest / floor_ms);
-  std::printf("   write .hcb                        %8.2f  %5.2fx\n", write, write / floor_ms);
-  std::printf("   all after decoding                %8.2f  %5.2fx   (target <= 1x)\n", after,
-              after / floor_ms);
+  report("3. Stages after decoding, one thread (ms, and x the decode floor):\n");
+  report("   trace (march, nesting, simplify)  %8.2f  %5.2fx\n", trace, trace / floor_ms);
+  report("   decompose                         %8.2f  %5.2fx\n", decompose, decompose / floor_ms);
+  report("   clean (validation)                %8.2f  %5.2fx\n", clean, clean / floor_ms);
+  report("   engine limits + other             %8.2f  %5.2fx\n", rest, rest / floor_ms);
+  report("   write .hcb                        %8.2f  %5.2fx\n", write, write / floor_ms);
+  report("   all after decoding                %8.2f  %5.2fx   (target <= 1x)\n", after,
+         after / floor_ms);
 
   std::vector<double> one, two;
   for (int r = 0; r < runs; ++r) {
@@ -535,7 +577,7 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
       (threads == 1 ? one : two).push_back(ms_since(start));
     }
   }
-  std::printf(
+  report(
       "4. Whole cook in process (median of %d): 1 thread %8.2f ms, 2 threads %8.2f ms:"
       " %.2fx faster (target >= 1.7x); 2 threads = %.2fx the decode floor (target <= 2x)\n",
       runs, median(one), median(two), median(one) / median(two), median(two) / floor_ms);
@@ -552,7 +594,7 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
       rss = std::max(rss, run.max_rss_mb);
     }
     const double output_mb = fs::file_size(out) / 1e6;
-    std::printf(
+    report(
         "   hullcook cook --threads %u as a process: %8.2f ms, peak RSS %6.1f MB;"
         " 4x the largest decoded image (%.1f MB RGBA) + output: %.1f MB\n",
         threads, median(walls), rss, largest_image_mb, 4 * largest_image_mb + output_mb);
@@ -563,12 +605,12 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
 // --------------------------
 
 void print_scaling(int runs, bool quick) {
-  std::printf(
+  report(
       "\n5. Tracer and cleaner against the outline's length (blobs with wavy edges and "
       "holes, best of %d)\n",
       runs);
-  std::printf("   %12s %12s %12s %12s %12s\n", "pixels", "vertices", "trace ms", "clean ms",
-              "ns/vertex");
+  report("   %12s %12s %12s %12s %12s\n", "pixels", "vertices", "trace ms", "clean ms",
+         "ns/vertex");
   std::vector<double> log_n, log_trace, log_clean;
   const std::vector<int> sides =
       quick ? std::vector<int>{100, 316, 1000} : std::vector<int>{100, 316, 1000, 3162};
@@ -591,8 +633,8 @@ void print_scaling(int runs, bool quick) {
       return ms_since(start);
     });
     const double n = static_cast<double>(traced.traced_vertices);
-    std::printf("   %12lld %12.0f %12.2f %12.2f %12.1f\n", static_cast<long long>(side) * side, n,
-                trace, clean, (trace + clean) * 1e6 / n);
+    report("   %12lld %12.0f %12.2f %12.2f %12.1f\n", static_cast<long long>(side) * side, n, trace,
+           clean, (trace + clean) * 1e6 / n);
     log_n.push_back(std::log(n));
     log_trace.push_back(std::log(trace));
     log_clean.push_back(std::log(clean));
@@ -607,7 +649,7 @@ void print_scaling(int runs, bool quick) {
     }
     return sxy / sxx;
   };
-  std::printf(
+  report(
       "   fitted exponent (time ~ vertices^k): trace k = %.2f, clean k = %.2f"
       "   (target: linear, k ~ 1)\n",
       slope(log_trace), slope(log_clean));
@@ -618,10 +660,12 @@ void print_scaling(int runs, bool quick) {
 int main(int argc, char** argv) {
   int runs = 5;
   bool quick = false;
+  std::optional<fs::path> docs;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
       runs = std::max(1, std::atoi(argv[++i]));
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    if (std::strcmp(argv[i], "--write-docs") == 0 && i + 1 < argc) docs = argv[++i];
     if (std::strcmp(argv[i], "--write-synthetic") == 0 && i + 1 < argc) {
       const std::vector<fs::path> files = write_synthetic_set(argv[i + 1], quick);
       std::printf("bench_cook: %zu synthetic images in %s\n", files.size(), argv[i + 1]);
@@ -633,12 +677,12 @@ int main(int argc, char** argv) {
   const fs::path scratch =
       fs::temp_directory_path() / ("hullcook_bench_cook_" + std::to_string(getpid()));
   fs::create_directories(scratch);
-  std::printf(
+  report(
       "bench_cook: whole-process and in-process figures of one run (hullcook %s); "
       "machine load average at start: ",
       HULLCOOK_EXE);
   double load[3] = {0, 0, 0};
-  if (getloadavg(load, 3) == 3) std::printf("%.2f %.2f %.2f\n", load[0], load[1], load[2]);
+  if (getloadavg(load, 3) == 3) report("%.2f %.2f %.2f\n", load[0], load[1], load[2]);
   print_startup(scratch, runs);
   std::vector<fs::path> samples;
   for (const auto& entry :
@@ -650,5 +694,6 @@ int main(int argc, char** argv) {
   print_set("synthetic set", write_synthetic_set(scratch / "synthetic", quick), scratch, runs);
   print_scaling(std::min(runs, 3), quick);
   fs::remove_all(scratch);
+  if (docs) write_docs(*docs);
   return 0;
 }
