@@ -207,6 +207,7 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
   std::mt19937 random(17);
   std::uniform_real_distribution<double> wobble(-1.0, 1.0);
   int reduced = 0, compared = 0;
+  std::uint64_t queries_with_shortcut = 0, queries_without = 0;
   for (int trial = 0; trial < 40; ++trial) {
     Ring star;
     const int n = 40 + trial * 3;
@@ -215,7 +216,8 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
       const double radius = 50 + 12 * wobble(random) + 20 * std::sin(3 * angle);
       star.push_back(radius * Vec2{std::cos(angle), std::sin(angle)});
     }
-    for (double tau : {0.5, 2.0, 6.0}) {
+    // τ down to 2e-7 of the star's size, where the shortcut's margins matter.
+    for (double tau : {1e-5, 0.5, 2.0, 6.0}) {
       for (std::size_t max_verts : {8u, 6u, 4u}) {
         const EngineLimits limits{max_verts, 0.005};
         for (const CookedPiece& piece : decompose_at(Region{star, {}}, tau)) {
@@ -227,8 +229,12 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
                                    edges_suffice, tau, limits);
           HullFitter query_only(piece.component, allowed, reach, HullFitter::Reach::outline,
                                 edges_suffice, tau, limits);
+          std::uint64_t before = reach.distance_queries();
           const std::optional<Ring> fast = with_shortcut.fit(piece.hull);
+          queries_with_shortcut += reach.distance_queries() - before;
+          before = reach.distance_queries();
           const std::optional<Ring> slow = query_only.fit(piece.hull);
+          queries_without += reach.distance_queries() - before;
           ++compared;
           ASSERT_EQ(fast.has_value(), slow.has_value()) << "trial " << trial << ", tau " << tau;
           if (fast) {
@@ -241,6 +247,9 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
   }
   EXPECT_GT(compared, 100);
   EXPECT_GT(reduced, 100);
+  // The shortcut is taken: the same fits, with fewer outline queries.
+  EXPECT_LT(queries_with_shortcut * 5, queries_without * 4)
+      << queries_with_shortcut << " queries with the shortcut, " << queries_without << " without";
 }
 
 }  // namespace

@@ -5,14 +5,18 @@
 #include "hullcook/cook/contract.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
+#include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
 
 #include <gtest/gtest.h>
+#include <glm/common.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 
 namespace hullcook {
@@ -323,6 +327,34 @@ TEST(Contract, AViolationIsAnInternalErrorNamingTheAssetAndTheFirst) {
                   violations.front() + " (and " + std::to_string(violations.size() - 1) + " more)");
   }
   EXPECT_NO_THROW(enforce_contract(asset.source, {}));
+}
+
+// A model accepted as input (spanning at least 1e-140) may be cut into pieces smaller than that:
+// the contract check validates them without the input's size floor. With it, the monkey scaled
+// to span 2.5e-140 broke the contract ("its component is not a valid region: too small", exit 4)
+// in review of the floor's first version.
+TEST(Contract, PiecesSmallerThanTheInputFloorKeepTheContract) {
+  const auto path =
+      std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/polygons/nazca/nazca_monkey.poly";
+  std::vector<Region> regions = read_poly_file(path);
+  for (Region& region : regions) {
+    for (Vec2& p : region.outer) p = {std::ldexp(p.x, -471), std::ldexp(p.y, -471)};
+  }
+  ASSERT_NO_THROW(refuse_tiny_rings(regions, "scaled monkey"));  // valid input
+  regions = clean_and_validate(std::move(regions), "scaled monkey");
+  const double tau = 0.01 * enclosing_radius(regions);
+  std::vector<CookedPiece> pieces;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Piece& piece : decompose(regions[0], {tau, Measure::h1, 0.1, 1.0}).pieces_at(tau)) {
+    Vec2 low = piece.hull[0], high = low;
+    for (Vec2 p : piece.hull) low = glm::min(low, p), high = glm::max(high, p);
+    smallest = std::min(smallest, std::max(high.x - low.x, high.y - low.y));
+    pieces.push_back({std::move(piece.component), std::move(piece.hull), piece.concavity});
+  }
+  ASSERT_LT(smallest, 1e-140);  // some pieces are below the input floor
+  const std::vector<std::string> violations =
+      find_contract_violations(pieces, regions, {tau, Measure::h1, EngineLimits{0, 0.0}});
+  EXPECT_TRUE(violations.empty()) << listed(violations);
 }
 
 }  // namespace

@@ -463,7 +463,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   for (const Region& region : input.regions)
     regions.push_back(transformed(region, input.transform));
   // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
-  if (!regions.empty()) regions = clean_and_validate(std::move(regions), asset.source);
+  if (!regions.empty()) {
+    refuse_tiny_rings(regions, asset.source);
+    regions = clean_and_validate(std::move(regions), asset.source);
+  }
   refuse_huge_coordinates(regions, asset.source);
   refuse_sliver_regions(regions, asset.source);
   refuse_too_many_holes(regions, asset.source, asset.image_width > 0);

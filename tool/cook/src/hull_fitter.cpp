@@ -376,6 +376,9 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
 std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   std::size_t m = hull.size();
   apex_cache_.assign(m * m, ApexState::unknown);
+  // The hull holds the component but for rounding (holds_component lets a vertex lie outside by
+  // 1e-12 of the hull's size): clearly_beyond allows twice that.
+  outside_by_rounding_ = 2e-12 * size_of(hull);
   corner_reach_.resize(m);
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
   // Read only where apex_cache_ says within, which apex_within writes together with the point.
@@ -477,8 +480,9 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
 // Whether the apex of edges i and j lies, by its distance beyond the line of an edge it cuts off,
 // further than bound from the component: the hull being reduced holds the component, so that
 // distance bounds the distance to it from below. Most apexes that fail are settled here, without
-// the outline query (a point-in-outline ray cast and a search of cells). The margin keeps the
-// answer the query's wherever the two round differently.
+// the outline query (a point-in-outline ray cast and a search of cells). The margins keep the
+// answer the query's wherever the two round differently, and allow for component vertices that
+// rounding leaves just outside the hull.
 bool HullFitter::clearly_beyond(const Ring& hull, std::size_t i, std::size_t j, Vec2 apex) const {
   if (!reach_is_component_) return false;
   const std::size_t m = hull.size();
@@ -486,7 +490,8 @@ bool HullFitter::clearly_beyond(const Ring& hull, std::size_t i, std::size_t j, 
     const Vec2 from = hull[k], edge = hull[(k + 1) % m] - from, offset = apex - from;
     // |edge| times the apex's distance beyond the edge's line (the hull is counter-clockwise).
     const double outward = -cross(edge, offset);
-    if (outward > glm::length(edge) * (bound_ * (1 + 1e-6) + 1e-9 * glm::length(offset))) {
+    if (outward > glm::length(edge) *
+                      (bound_ * (1 + 1e-6) + 1e-9 * glm::length(offset) + outside_by_rounding_)) {
       return true;
     }
   }

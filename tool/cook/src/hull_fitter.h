@@ -88,6 +88,7 @@ class HullFitter {
   std::vector<ApexState> apex_cache_;
   std::vector<Vec2> apex_points_;
   std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
+  double outside_by_rounding_ = 0;    // how far a component vertex may lie outside that hull
   // reduce_vertex_count's chains: the one being followed, and those that closed.
   std::vector<std::size_t> chain_, closed_;
   std::vector<std::pair<std::size_t, std::size_t>> closed_spans_;  // (first, size) in closed_

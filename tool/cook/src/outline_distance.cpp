@@ -310,6 +310,7 @@ bool OutlineDistance::contains(Vec2 p) const {
 }
 
 double OutlineDistance::distance(Vec2 p, double limit) const {
+  ++distance_queries_;
   if (edges_.empty()) return kInfinity;
   if (contains(p)) return 0.0;
   // Cells further than k rings from p's cell (p clamped into the grid, which only brings it

@@ -24,6 +24,8 @@ class OutlineDistance {
   // Distance from p to the outline: 0 inside. Beyond limit, some value above limit (the search
   // stops there).
   double distance(Vec2 p, double limit) const;
+  // How many distance() calls this object has answered (what the fitters' shortcuts save).
+  std::uint64_t distance_queries() const { return distance_queries_; }
 
   // True when every point of segment ab is within tau of the outline: the points within tau of
   // each boundary edge form one interval of the segment (a capsule is convex), and what the
@@ -71,6 +73,7 @@ class OutlineDistance {
   mutable std::vector<std::uint32_t> visited_;              // per edge: the query that last saw it
   mutable std::vector<std::pair<double, double>> covered_;  // segment_within's intervals
   mutable std::uint32_t query_ = 0;
+  mutable std::uint64_t distance_queries_ = 0;
 };
 
 }  // namespace hullcook

@@ -241,6 +241,26 @@ constexpr double kSmallestSpan = 1e-140;
 
 }  // namespace
 
+void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view source) {
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    auto check = [&](const Ring& ring, const std::string& name) {
+      if (ring.empty()) return;
+      const Box box = box_of(ring);
+      const double span = std::max(box.max_x - box.min_x, box.max_y - box.min_y);
+      if (span > 0.0 && span < kSmallestSpan) {
+        throw InputError(std::string(source) + ": region " + std::to_string(r + 1) + " " + name +
+                         ": too small: it spans " + format_number(span) +
+                         " (less than 1e-140), beyond the precision of its orientation tests; "
+                         "scale its coordinates up");
+      }
+    };
+    check(regions[r].outer, "outer boundary");
+    for (std::size_t h = 0; h < regions[r].holes.size(); ++h) {
+      check(regions[r].holes[h], "hole " + std::to_string(h + 1));
+    }
+  }
+}
+
 std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source) {
   const std::string file(source);
   if (regions.empty()) throw InputError(file + ": no polygon");
@@ -266,15 +286,6 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
         if (std::abs(ring[i].x) > kLargestCoordinate || std::abs(ring[i].y) > kLargestCoordinate) {
           fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
                " has a coordinate too large (beyond 1e150 in magnitude)");
-        }
-      }
-      if (!ring.empty()) {
-        const Box box = box_of(ring);
-        const double span = std::max(box.max_x - box.min_x, box.max_y - box.min_y);
-        if (span > 0.0 && span < kSmallestSpan) {
-          fail(ring_name(ring_index) + ": too small: it spans " + format_number(span) +
-               " (less than 1e-140), beyond the precision of its orientation tests; scale its "
-               "coordinates up");
         }
       }
       remove_degenerate_vertices_in_place(ring);

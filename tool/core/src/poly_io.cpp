@@ -166,7 +166,9 @@ std::vector<Region> read_poly_file(const std::filesystem::path& path) {
   contents << file.rdbuf();
   if (file.bad()) throw InputError(path.string() + ": cannot read");
   const std::string source = path.string();
-  return clean_and_validate(parse_poly(contents.str(), source), source);
+  std::vector<Region> regions = parse_poly(contents.str(), source);
+  refuse_tiny_rings(regions, source);
+  return clean_and_validate(std::move(regions), source);
 }
 
 std::string format_poly(const std::vector<Region>& regions) {

@@ -16,6 +16,13 @@ namespace hullcook {
 // Self-intersection is found with a uniform grid: near-linear on ordinary rings.
 std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source);
 
+// Throws InputError "source: region R hole H: too small: ..." for a ring whose bounding box's
+// larger side is above 0 and below 1e-140: there the orientation tests' products of coordinate
+// differences reach the subnormal range and stop being exact. For input, before
+// clean_and_validate (which would otherwise remove such a ring's vertices as collinear); not for
+// the pieces of a valid input, which may be smaller.
+void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view source);
+
 // Removes repeated and exactly collinear vertices of a ring (including across the closing edge).
 // The result may have fewer than 3 vertices.
 Ring remove_degenerate_vertices(const Ring& ring);
