@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -55,7 +56,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   std::vector<Region> regions;
   try {
-    regions = clean_and_validate(parse_poly(text, "fuzz.poly"), "fuzz.poly");
+    // As read_poly_file reads a file.
+    regions = parse_poly(text, "fuzz.poly");
+    refuse_tiny_rings(regions, "fuzz.poly");
+    regions = clean_and_validate(std::move(regions), "fuzz.poly");
     refuse_too_many_holes(regions, "fuzz.poly", false);
     for (std::size_t r = 0; r < regions.size(); ++r) {
       refuse_sliver_regions({regions[r]}, "fuzz.poly", r + 1);
