@@ -105,8 +105,10 @@ double turn_height(const Ring& ring, std::size_t i) {
 
 std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& limits) {
   std::size_t n = hull.size();
-  std::vector<bool> wanted(n, false);
-  auto want = [&](std::size_t edge) { wanted[edge % n] = true; };
+  // Scratch, reused: the fitter asks this of every hull it grows.
+  thread_local std::vector<char> wanted;
+  wanted.assign(n, 0);
+  auto want = [&](std::size_t edge) { wanted[edge % n] = 1; };
   double collinear = kCollinearFractionOfWeld * limits.weld;
   for (std::size_t i = 0; i < n; ++i) {
     if (turn_height(hull, i) < collinear) {
