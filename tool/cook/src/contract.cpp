@@ -293,7 +293,9 @@ std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limi
 // whose two ends lie within τ of one line lies within τ of the boundary.
 class HullLines {
  public:
-  explicit HullLines(const Ring& hull) {
+  // The lines of hull, replacing any it held (one object serves every piece of a level).
+  void assign(const Ring& hull) {
+    from_.clear(), direction_.clear();
     from_.reserve(hull.size()), direction_.reserve(hull.size());
     for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
       const Vec2 edge = hull[(i + 1) % n] - hull[i];
@@ -363,7 +365,9 @@ void check_component_in_hull(const Region& component, const HullLines& lines, do
                              double slack, Worst& outside, Worst& far) {
   auto check_ring = [&](const Ring& ring) {
     const std::size_t n = ring.size();
-    std::vector<std::pair<double, std::size_t>> nearest(n);
+    // Scratch, reused: this runs for every piece of a cook.
+    thread_local std::vector<std::pair<double, std::size_t>> nearest;
+    nearest.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       nearest[i] = lines.nearest(ring[i]);
       if (nearest[i].first < -slack) outside.offer(-nearest[i].first, ring[i]);
@@ -429,9 +433,9 @@ class HullReach {
 // Where each hull vertex stands in the component's outer ring (ring.size() where it does not):
 // the hull's vertices that are the ring's come in the ring's order, so one walk round the ring
 // finds them (a vertex the engine limits added costs a walk round it).
-std::vector<std::size_t> hull_vertices_in_ring(const Ring& hull, const Ring& ring) {
+void hull_vertices_in_ring(const Ring& hull, const Ring& ring, std::vector<std::size_t>& index) {
   const std::size_t n = ring.size();
-  std::vector<std::size_t> index(hull.size(), n);
+  index.assign(hull.size(), n);
   std::size_t from = 0;
   for (std::size_t k = 0; k < hull.size(); ++k) {
     for (std::size_t step = 0, i = from; step < n; ++step, i = i + 1 == n ? 0 : i + 1) {
@@ -442,7 +446,6 @@ std::vector<std::size_t> hull_vertices_in_ring(const Ring& hull, const Ring& rin
       }
     }
   }
-  return index;
 }
 
 // --- The partition. -------------------------------------------------------------------------
@@ -648,6 +651,8 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   const bool partitioned = violations.empty();
 
   HullReach hull_reach(outline, limit);
+  HullLines lines;                   // of the piece at hand
+  std::vector<std::size_t> in_ring;  // of the piece at hand: see hull_vertices_in_ring
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const CookedPiece& piece = pieces[k];
     const std::string name = "piece " + std::to_string(k + 1) + ": ";
@@ -671,7 +676,8 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
     // The distances below are measured by a convex polygon's edge lines.
     if (hull_problem && !hull_problem->convex) continue;
     Worst outside, far;
-    check_component_in_hull(piece.component, HullLines(piece.hull), limit, slack, outside, far);
+    lines.assign(piece.hull);
+    check_component_in_hull(piece.component, lines, limit, slack, outside, far);
     if (outside.found()) {
       report("its component's vertex " + point(outside.where) + " lies " + number(outside.value) +
              " outside its hull");
@@ -688,7 +694,7 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
     // whole outline.
     Worst beyond;
     const Ring& hull = piece.hull;
-    const std::vector<std::size_t> in_ring = hull_vertices_in_ring(hull, piece.component.outer);
+    hull_vertices_in_ring(hull, piece.component.outer, in_ring);
     const std::size_t ring_size = piece.component.outer.size();
     std::optional<OutlineDistance> own;
     auto near_own = [&]() -> const OutlineDistance* {
