@@ -38,12 +38,16 @@ std::int64_t cross(const GridPoint& o, const GridPoint& a, const GridPoint& b) {
 }
 
 // Andrew's monotone chain on the integer grid, exact: counter-clockwise, strictly convex (no
-// repeated or collinear vertex). Fewer than 3 points when the rounded hull is degenerate.
-std::vector<GridPoint> strict_convex_hull(std::vector<GridPoint> points) {
+// repeated or collinear vertex), into hull. Fewer than 3 points when the rounded hull is
+// degenerate. Sorts points.
+void strict_convex_hull(std::vector<GridPoint>& points, std::vector<GridPoint>& hull) {
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3) return points;
-  std::vector<GridPoint> hull(2 * points.size());
+  if (points.size() < 3) {
+    hull = points;
+    return;
+  }
+  hull.resize(2 * points.size());
   std::size_t k = 0;
   for (const GridPoint& p : points) {
     while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
@@ -54,7 +58,6 @@ std::vector<GridPoint> strict_convex_hull(std::vector<GridPoint> points) {
     hull[k++] = points[i];
   }
   hull.resize(k - 1);  // the last point repeats the first
-  return hull;
 }
 
 // Distance from p to the region bounded by ring (0 inside), for any simple ring.
@@ -100,8 +103,9 @@ enum class Attempt { ok, too_coarse };
 Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, double bound,
                       QuantizedHull& out) {
   const double quantum = step;
-  std::vector<GridPoint> points;
-  points.reserve(hull.size());
+  // Scratch, reused: one hull after the other.
+  thread_local std::vector<GridPoint> points, grid;
+  points.clear();
   // The farthest a vertex moves [output units, squared], and the largest coordinate.
   double moved_squared = 0.0, size = 0.0;
   for (const Vec2& p : hull) {
@@ -115,7 +119,7 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
     moved_squared = std::max(moved_squared, dx * dx + dy * dy);
     size = std::max({size, std::fabs(p.x), std::fabs(p.y)});
   }
-  const std::vector<GridPoint> grid = strict_convex_hull(std::move(points));
+  strict_convex_hull(points, grid);
   if (grid.size() < format::kMinHullVertices) return Attempt::too_coarse;
 
   std::int64_t min_x = grid[0].x, max_x = min_x, min_y = grid[0].y, max_y = min_y;
