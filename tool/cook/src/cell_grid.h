@@ -86,7 +86,9 @@ class CellBuckets {
     for (std::size_t i = 0; i < items; ++i) file(i, [&](std::size_t cell) { ++start_[cell + 1]; });
     for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
     entries_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    // Scratch, reused: buckets are built for every region of a cook.
+    thread_local std::vector<std::size_t> fill;
+    fill.assign(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < items; ++i) {
       file(i, [&](std::size_t cell) { entries_[fill[cell]++] = i; });
     }

@@ -81,6 +81,9 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
     std::size_t index;  // in its ring
   };
   std::vector<Corner> corners;
+  std::size_t corner_count = 0;
+  for (const Ring* ring : rings) corner_count += ring->size();
+  corners.reserve(corner_count);
   double longest = 0.0;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r];
