@@ -158,7 +158,8 @@ class Simplifier {
   }
 
   void douglas_peucker(int r, int from, int to) {
-    std::vector<std::pair<int, int>> stack{{from, to}};
+    std::vector<std::pair<int, int>>& stack = peucker_stack_;
+    stack.assign(1, {from, to});
     while (!stack.empty()) {
       auto [i, j] = stack.back();
       stack.pop_back();
@@ -183,8 +184,15 @@ class Simplifier {
 
   std::vector<Segment> all_segments() const {
     std::vector<Segment> segments;
+    std::size_t count = 0;
+    for (const auto& keep : keep_) {
+      count += static_cast<std::size_t>(
+          std::count_if(keep.begin(), keep.end(), [](auto k) { return k != 0; }));
+    }
+    segments.reserve(count);
+    std::vector<int> kept;
     for (std::size_t r = 0; r < rings_.size(); ++r) {
-      std::vector<int> kept;
+      kept.clear();
       for (int i = 0; i < size(static_cast<int>(r)); ++i) {
         if (keep_[r][i]) kept.push_back(i);
       }
@@ -282,6 +290,7 @@ class Simplifier {
   const std::vector<Ring>& rings_;
   double eps_;
   std::vector<std::vector<char>> keep_;
+  std::vector<std::pair<int, int>> peucker_stack_;  // douglas_peucker's, reused
   // The grid of touching_pairs(), kept between rounds so that it is allocated once.
   mutable std::vector<int> grid_starts_, grid_entries_, grid_fill_;
 };
