@@ -12,6 +12,7 @@
 // --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it),
 // --write-docs DIR (also put this run's report in DIR/benchmarks.md, between its markers); any
 // other option (scripts/bench passes Google Benchmark's) is ignored.
+#include "bench_support.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/trace/trace.h"
@@ -66,18 +67,9 @@ __attribute__((format(printf, 1, 2))) void report(const char* format, ...) {
   g_report += text;
 }
 
-// Replaces the part of DIR/benchmarks.md between bench_cook's markers with this run's report.
+// Puts this run's report in DIR/benchmarks.md, between bench_cook's markers.
 void write_docs(const fs::path& directory) {
   const fs::path page = directory / "benchmarks.md";
-  std::ifstream in(page);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string begin = "<!-- bench_cook: generated from here -->\n";
-  const std::string end = "<!-- bench_cook: generated up to here -->";
-  const std::size_t from = text.find(begin), to = text.find(end);
-  if (from == std::string::npos || to == std::string::npos || to < from) {
-    std::fprintf(stderr, "bench_cook: %s has no bench_cook markers\n", page.string().c_str());
-    std::exit(1);
-  }
   const std::time_t now = std::time(nullptr);
   char date[16];
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
@@ -85,8 +77,10 @@ void write_docs(const fs::path& directory) {
                                 " by one run of `bench_cook` (`scripts/bench --write-docs`):\n\n"
                                 "```text\n" +
                                 g_report + "```\n\n";
-  text.replace(from + begin.size(), to - from - begin.size(), generated);
-  std::ofstream(page) << text;
+  if (!bench::replace_generated_section(page, "bench_cook", generated)) {
+    std::fprintf(stderr, "bench_cook: %s has no bench_cook markers\n", page.string().c_str());
+    std::exit(1);
+  }
 }
 
 using Clock = std::chrono::steady_clock;

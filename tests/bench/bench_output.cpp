@@ -3,6 +3,7 @@
 // per hull vertex over all levels, and the median CPU time of one thread to write the bytes (the
 // cook itself and the file system are not timed). Prints a markdown table; with
 // --write-docs DIR it also replaces the generated part of DIR/benchmarks.md's "Output sizes".
+#include "bench_support.h"
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/gltf_writer.h"
@@ -89,16 +90,9 @@ std::string table_rows(const std::string& set, const std::vector<CookedAsset>& a
 
 void write_docs(const fs::path& directory, const std::string& generated) {
   const fs::path page = directory / "benchmarks.md";
-  std::ifstream in(page);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string begin = "<!-- bench_output: generated from here -->\n";
-  const std::string end = "<!-- bench_output: generated up to here -->";
-  const std::size_t from = text.find(begin), to = text.find(end);
-  if (from == std::string::npos || to == std::string::npos || to < from) {
+  if (!bench::replace_generated_section(page, "bench_output", generated)) {
     throw std::runtime_error(page.string() + ": no bench_output markers");
   }
-  text.replace(from + begin.size(), to - from - begin.size(), generated);
-  std::ofstream(page) << text;
 }
 
 }  // namespace

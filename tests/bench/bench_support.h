@@ -1,11 +1,14 @@
-// Text and statistics shared by bench_decompose's reports.
+// Text, statistics and docs/benchmarks.md sections shared by the benchmarks' reports.
 #pragma once
 
 #include <time.h>
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -58,6 +61,24 @@ inline double thread_cpu_ms() {
   timespec now{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
   return static_cast<double>(now.tv_sec) * 1e3 + static_cast<double>(now.tv_nsec) * 1e-6;
+}
+
+// Replaces the text of page between "<!-- NAME: generated from here -->" (and its line end) and
+// "<!-- NAME: generated up to here -->" with generated; false, the page untouched, when the
+// markers are missing.
+inline bool replace_generated_section(const std::filesystem::path& page, const std::string& name,
+                                      const std::string& generated) {
+  std::string text;
+  if (std::ifstream in(page, std::ios::binary); in) {
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string begin = "<!-- " + name + ": generated from here -->\n";
+  const std::string end = "<!-- " + name + ": generated up to here -->";
+  const std::size_t from = text.find(begin), to = text.find(end);
+  if (from == std::string::npos || to == std::string::npos || to < from) return false;
+  text.replace(from + begin.size(), to - from - begin.size(), generated);
+  std::ofstream(page, std::ios::binary) << text;
+  return true;
 }
 
 }  // namespace hullcook::bench
