@@ -203,6 +203,39 @@ TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {
 // shortcut must change nothing: on the pieces of seeded random star polygons, at several vertex
 // limits and tolerances, the fit with it equals the fit with the query alone (the same reach,
 // declared as an outline).
+// The hulls are fitted on several threads when asked (issue 17): the same pieces and hulls, in the
+// same order, whatever the count, split pieces included.
+TEST(EngineLimits, Issue17_ThreadsGiveTheSamePiecesInOrder) {
+  std::mt19937 random(1717);
+  std::uniform_real_distribution<double> wobble(-1.0, 1.0);
+  std::vector<CookedPiece> pieces;
+  for (int k = 0; k < 60; ++k) {
+    Ring star;
+    const int n = 30 + k;
+    const Vec2 centre{200.0 * (k % 8), 200.0 * (k / 8)};
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * i / n;
+      const double radius = (k % 5 == 0 ? 0.02 : 50) * (1 + 0.2 * wobble(random));
+      star.push_back(centre + radius * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    pieces.push_back(convex_piece_of(star));
+  }
+  const double tau = 0.5;
+  const EngineLimits limits{6, 0.005};
+  const std::vector<CookedPiece> one = apply_engine_limits(pieces, tau, limits, decompose_at, "t");
+  EXPECT_GT(one.size(), pieces.size());  // some were split
+  expect_within(one, tau, limits);
+  for (unsigned threads : {2u, 3u, 8u}) {
+    const std::vector<CookedPiece> many =
+        apply_engine_limits(pieces, tau, limits, decompose_at, "t", threads);
+    ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+    for (std::size_t k = 0; k < one.size(); ++k) {
+      EXPECT_EQ(many[k].hull, one[k].hull) << threads << " threads, piece " << k;
+      EXPECT_EQ(many[k].component.outer, one[k].component.outer);
+    }
+  }
+}
+
 TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
   std::mt19937 random(17);
   std::uniform_real_distribution<double> wobble(-1.0, 1.0);

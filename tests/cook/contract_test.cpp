@@ -96,6 +96,35 @@ TEST(Contract, DroppedPieceBreaksThePartition) {
   EXPECT_TRUE(says(violations, "the pieces do not partition the outline")) << listed(violations);
 }
 
+// The pieces are checked on several threads when asked (issue 17: one huge image's check was all
+// on one thread): the same reports, in the pieces' order, whatever the count.
+TEST(Contract, Issue17_ThreadsGiveTheSameReportsInOrder) {
+  CookedAsset asset = grid_sprite();
+  ASSERT_GT(asset.pieces.size(), 40u);
+  const ContractTerms terms{asset.tau, *parse_measure(asset.measure), kLimits};
+  EXPECT_TRUE(find_contract_violations(asset.pieces, asset.regions, terms, 3).empty());
+  // Three pieces broken: a shrunk hull, one moved far out, one with a vertex too many.
+  for (std::size_t k : {3u, 17u, 31u}) {
+    Ring& hull = asset.pieces[k].hull;
+    Vec2 centre{0, 0};
+    for (Vec2 v : hull) centre += v / double(hull.size());
+    if (k == 3)
+      for (Vec2& v : hull) v = centre + 0.9 * (v - centre);
+    if (k == 17)
+      for (Vec2& v : hull) v += Vec2{0, 40};
+    if (k == 31) hull.insert(hull.begin() + 1, 0.5 * (hull[0] + hull[1]));
+  }
+  const std::vector<std::string> one = find_contract_violations(asset.pieces, asset.regions, terms);
+  ASSERT_GE(one.size(), 3u) << listed(one);
+  EXPECT_TRUE(names(one, 3, "outside its hull")) << listed(one);
+  EXPECT_TRUE(names(one, 17, "beyond the outline")) << listed(one);
+  EXPECT_TRUE(names(one, 31, "")) << listed(one);
+  for (unsigned threads : {2u, 3u, 8u}) {
+    EXPECT_EQ(find_contract_violations(asset.pieces, asset.regions, terms, threads), one)
+        << threads << " threads";
+  }
+}
+
 TEST(Contract, PiecesWhoseAreasAddUpInTheWrongPlaceBreakThePartition) {
   // The left half of a 2 x 1 rectangle twice: the areas add up, the right half is left out.
   const Region rectangle{{{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {}};

@@ -2,6 +2,7 @@
 
 #include "hull_fitter.h"
 #include "outline_distance.h"
+#include "parallel_for.h"
 #include "piece_merge.h"
 #include "small_hull.h"
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -87,47 +89,22 @@ class Constrainer {
   Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split)
       : tau_(tau), limits_(limits), split_(split) {}
 
-  void add(CookedPiece piece, int depth) {
-    // Most hulls meet the limits as the decomposition gives them.
-    if (hull_meets_limits(piece.hull, limits_)) {
-      Ring hull = piece.hull;
-      slots_.push_back({std::move(piece), std::move(hull), true});
+  // Places every piece, on up to threads threads: each piece's slots are its own (they depend
+  // on it alone) and are joined in the pieces' order, whatever the thread count.
+  void add_all(std::vector<CookedPiece> pieces, unsigned threads) {
+    if (threads <= 1 || pieces.size() < kPiecesWorthAThread) {
+      for (CookedPiece& piece : pieces) add(std::move(piece), 0, slots_);
       return;
     }
-    // A hull grows within τ of its own component: stricter than the outline, it keeps hulls on
-    // their pieces rather than spread over their neighbours.
-    std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);
-    OutlineDistance reach({&piece.component});
-    bool edges_suffice = pockets_within(piece.component, piece.hull, tau_);
-    HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component, edges_suffice,
-                      tau_, limits_);
-    if (std::optional<Ring> hull = fitter.fit(piece.hull)) {
-      slots_.push_back({std::move(piece), std::move(*hull), true});
-      return;
+    std::vector<std::vector<Slot>> placed(pieces.size());
+    parallel_for(pieces.size(), threads,
+                 [&](std::size_t k, unsigned) { add(std::move(pieces[k]), 0, placed[k]); });
+    std::size_t count = 0;
+    for (const std::vector<Slot>& slots : placed) count += slots.size();
+    slots_.reserve(count);
+    for (std::vector<Slot>& slots : placed) {
+      std::move(slots.begin(), slots.end(), std::back_inserter(slots_));
     }
-    // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
-    if (!is_small(piece)) {
-      // Finer decompositions leave more room for growth; at τ = 0 the pieces are convex.
-      static constexpr double kSplitFractions[] = {0.5, 0.125, 0.0};
-      for (; depth < 3; ++depth) {
-        std::vector<CookedPiece> parts = split_(piece.component, tau_ * kSplitFractions[depth]);
-        if (parts.size() > 1) {
-          for (CookedPiece& part : parts) add(std::move(part), depth + 1);
-          return;
-        }
-      }
-      if (is_convex_without_holes(piece)) {
-        if (auto halves = halve_convex(piece.component.outer)) {
-          for (Ring* half : {&halves->first, &halves->second}) {
-            Ring hull = convex_hull(*half);
-            add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0}, 3);
-          }
-          return;
-        }
-      }
-    }
-    Ring hull = piece.hull;
-    slots_.push_back({std::move(piece), std::move(hull), false});
   }
 
   // Places the pieces no hull of their own could hold: each is merged into a neighbour, or
@@ -162,6 +139,54 @@ class Constrainer {
     bool merged = false;  // merged into another slot
   };
 
+  // Below this many pieces, fitting them costs less than starting a thread.
+  static constexpr std::size_t kPiecesWorthAThread = 16;
+
+  // Appends to out the slots of piece: one, or those of its parts when it is split.
+  void add(CookedPiece piece, int depth, std::vector<Slot>& out) const {
+    // Most hulls meet the limits as the decomposition gives them.
+    if (hull_meets_limits(piece.hull, limits_)) {
+      Ring hull = piece.hull;
+      out.push_back({std::move(piece), std::move(hull), true});
+      return;
+    }
+    // A hull grows within τ of its own component: stricter than the outline, it keeps hulls on
+    // their pieces rather than spread over their neighbours.
+    std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);
+    OutlineDistance reach({&piece.component});
+    bool edges_suffice = pockets_within(piece.component, piece.hull, tau_);
+    HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component, edges_suffice,
+                      tau_, limits_);
+    if (std::optional<Ring> hull = fitter.fit(piece.hull)) {
+      out.push_back({std::move(piece), std::move(*hull), true});
+      return;
+    }
+    // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
+    if (!is_small(piece)) {
+      // Finer decompositions leave more room for growth; at τ = 0 the pieces are convex.
+      static constexpr double kSplitFractions[] = {0.5, 0.125, 0.0};
+      for (; depth < 3; ++depth) {
+        std::vector<CookedPiece> parts = split_(piece.component, tau_ * kSplitFractions[depth]);
+        if (parts.size() > 1) {
+          for (CookedPiece& part : parts) add(std::move(part), depth + 1, out);
+          return;
+        }
+      }
+      if (is_convex_without_holes(piece)) {
+        if (auto halves = halve_convex(piece.component.outer)) {
+          for (Ring* half : {&halves->first, &halves->second}) {
+            Ring hull = convex_hull(*half);
+            add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0}, 3, out);
+          }
+          return;
+        }
+      }
+    }
+    Ring hull = piece.hull;
+    out.push_back({std::move(piece), std::move(hull), false});
+  }
+
+ private:
   // Merges slot k into the neighbour it shares the longest cut with, among those whose merged
   // component needs no split at τ and whose hull then fits within the limits.
   bool merge_into_neighbour(std::size_t k) {
@@ -326,9 +351,10 @@ bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
 
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
-                                             const SplitComponent& split, std::string_view source) {
+                                             const SplitComponent& split, std::string_view source,
+                                             unsigned threads) {
   Constrainer constrainer(tau, limits, split);
-  for (CookedPiece& piece : pieces) constrainer.add(std::move(piece), 0);
+  constrainer.add_all(std::move(pieces), threads);
   return constrainer.finish(source);
 }
 

@@ -2,6 +2,7 @@
 
 #include "cell_grid.h"
 #include "outline_distance.h"
+#include "parallel_for.h"
 
 #include "hullcook/core/clean.h"
 #include "hullcook/core/error.h"
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -627,11 +629,110 @@ double pocket_depth(const Ring& ring, std::size_t first, std::size_t last) {
   return depth / length;
 }
 
+// What one worker of the check keeps from piece to piece: the whole outline's distances (built
+// when a piece first needs them) and scratch.
+struct PieceChecker {
+  PieceChecker(const std::vector<Region>& outline, double limit) : hull_reach(outline, limit) {}
+  HullReach hull_reach;
+  HullLines lines;                   // of the piece at hand
+  std::vector<std::size_t> in_ring;  // of the piece at hand: see hull_vertices_in_ring
+};
+
+// Appends to out the ways piece k breaks the contract (see find_contract_violations).
+// tau: the reports' " (τ ...)".
+void check_piece(std::size_t k, const CookedPiece& piece, const ContractTerms& terms, double slack,
+                 const std::string& tau, bool partitioned, PieceChecker& checker,
+                 std::vector<std::string>& out) {
+  const double limit = terms.tau + slack;
+  HullReach& hull_reach = checker.hull_reach;
+  HullLines& lines = checker.lines;
+  std::vector<std::size_t>& in_ring = checker.in_ring;
+  const std::string name = "piece " + std::to_string(k + 1) + ": ";
+  auto report = [&](const std::string& problem) { out.push_back(name + problem); };
+  Region cleaned;
+  const bool convex =
+      piece.component.holes.empty() && is_strictly_convex_ccw(piece.component.outer);
+  const std::optional<std::string> component_problem =
+      component_defect(piece.component, convex, slack, cleaned);
+  if (component_problem) report(*component_problem);
+  const std::optional<HullDefect> hull_problem = hull_defect(piece.hull, terms.limits);
+  if (hull_problem) report(hull_problem->problem);
+
+  if (!component_problem && !convex) {
+    const double concavity = measure_concavity(cleaned, terms.measure, terms.tau);
+    if (concavity > limit) {
+      report("its concavity, measured afresh under " + std::string(measure_name(terms.measure)) +
+             ", is " + number(concavity) + tau);
+    }
+  }
+  // The distances below are measured by a convex polygon's edge lines.
+  if (hull_problem && !hull_problem->convex) return;
+  Worst outside, far;
+  lines.assign(piece.hull);
+  check_component_in_hull(piece.component, lines, limit, slack, outside, far);
+  if (outside.found()) {
+    report("its component's vertex " + point(outside.where) + " lies " + number(outside.value) +
+           " outside its hull");
+  }
+  if (far.found()) {
+    report("its component's point " + point(far.where) + " lies " + number(far.value) +
+           " from its hull's boundary" + tau);
+  }
+
+  // A hull vertex that is a vertex of its component lies in the outline when the components
+  // partition it (else that is reported already): only the others are measured.
+  // The others are measured first against the component alone (in the outline when the
+  // components partition it; a grown hull mostly stays near its own piece), then against the
+  // whole outline.
+  Worst beyond;
+  const Ring& hull = piece.hull;
+  hull_vertices_in_ring(hull, piece.component.outer, in_ring);
+  const std::size_t ring_size = piece.component.outer.size();
+  std::optional<OutlineDistance> own;
+  auto near_own = [&]() -> const OutlineDistance* {
+    if (!partitioned) return nullptr;
+    if (!own) own.emplace(std::vector<const Region*>{&piece.component});
+    return &*own;
+  };
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    if (in_ring[i] < ring_size && partitioned) continue;
+    const OutlineDistance* component = near_own();
+    if (component && component->distance(hull[i], limit) <= limit) continue;
+    hull_reach.vertex(hull[i], beyond);
+  }
+  if (beyond.found()) {
+    report("its hull's vertex " + point(beyond.where) + " lies " + number(beyond.value) +
+           " beyond the outline" + tau);
+    return;
+  }
+  // A hull edge that is an edge of the component lies in the outline likewise, and one that
+  // bridges a pocket of the component's ring within the limit: the perpendicular through any
+  // point of the edge crosses the chain from one end to the other (it separates them), at a
+  // point of the outline no farther than the chain's farthest vertex from the edge's line.
+  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+    const std::size_t from = in_ring[i], to = in_ring[(i + 1) % n];
+    const bool on_component = partitioned && from < ring_size && to < ring_size &&
+                              ((from + 1 == ring_size ? 0 : from + 1) == to ||
+                               pocket_depth(piece.component.outer, from, to) <= limit);
+    if (on_component) continue;
+    const OutlineDistance* component = near_own();
+    if (component && component->segment_within(hull[i], hull[(i + 1) % n], limit)) continue;
+    hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
+  }
+  if (beyond.found()) {
+    report("its hull's point " + point(beyond.where) + " lies " + number(beyond.value) +
+           " beyond the outline" + tau);
+  }
+}
+
+// Below this many pieces, checking them costs less than starting a thread.
+constexpr std::size_t kPiecesWorthAThread = 16;
+
 }  // namespace
 
 std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
                                                   const std::vector<Region>& outline,
-                                                  const ContractTerms& terms) {
+                                                  const ContractTerms& terms, unsigned threads) {
   std::vector<std::string> violations;
   if (outline.empty()) {
     if (!pieces.empty()) violations.push_back(std::to_string(pieces.size()) + " pieces of nothing");
@@ -653,87 +754,22 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   if (partition_problem) violations.push_back(*partition_problem);
   const bool partitioned = violations.empty();
 
-  HullReach hull_reach(outline, limit);
-  HullLines lines;                   // of the piece at hand
-  std::vector<std::size_t> in_ring;  // of the piece at hand: see hull_vertices_in_ring
-  for (std::size_t k = 0; k < pieces.size(); ++k) {
-    const CookedPiece& piece = pieces[k];
-    const std::string name = "piece " + std::to_string(k + 1) + ": ";
-    auto report = [&](const std::string& problem) { violations.push_back(name + problem); };
-    Region cleaned;
-    const bool convex =
-        piece.component.holes.empty() && is_strictly_convex_ccw(piece.component.outer);
-    const std::optional<std::string> component_problem =
-        component_defect(piece.component, convex, slack, cleaned);
-    if (component_problem) report(*component_problem);
-    const std::optional<HullDefect> hull_problem = hull_defect(piece.hull, terms.limits);
-    if (hull_problem) report(hull_problem->problem);
-
-    if (!component_problem && !convex) {
-      const double concavity = measure_concavity(cleaned, terms.measure, terms.tau);
-      if (concavity > limit) {
-        report("its concavity, measured afresh under " + std::string(measure_name(terms.measure)) +
-               ", is " + number(concavity) + tau);
-      }
+  // Each piece on its own (the work splits over threads), its reports in the pieces' order.
+  const unsigned workers = static_cast<unsigned>(
+      std::max<std::size_t>(1, std::min<std::size_t>(threads, pieces.size())));
+  std::vector<PieceChecker> checkers(workers, PieceChecker(outline, limit));
+  if (workers == 1 || pieces.size() < kPiecesWorthAThread) {
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[0], violations);
     }
-    // The distances below are measured by a convex polygon's edge lines.
-    if (hull_problem && !hull_problem->convex) continue;
-    Worst outside, far;
-    lines.assign(piece.hull);
-    check_component_in_hull(piece.component, lines, limit, slack, outside, far);
-    if (outside.found()) {
-      report("its component's vertex " + point(outside.where) + " lies " + number(outside.value) +
-             " outside its hull");
-    }
-    if (far.found()) {
-      report("its component's point " + point(far.where) + " lies " + number(far.value) +
-             " from its hull's boundary" + tau);
-    }
-
-    // A hull vertex that is a vertex of its component lies in the outline when the components
-    // partition it (else that is reported already): only the others are measured.
-    // The others are measured first against the component alone (in the outline when the
-    // components partition it; a grown hull mostly stays near its own piece), then against the
-    // whole outline.
-    Worst beyond;
-    const Ring& hull = piece.hull;
-    hull_vertices_in_ring(hull, piece.component.outer, in_ring);
-    const std::size_t ring_size = piece.component.outer.size();
-    std::optional<OutlineDistance> own;
-    auto near_own = [&]() -> const OutlineDistance* {
-      if (!partitioned) return nullptr;
-      if (!own) own.emplace(std::vector<const Region*>{&piece.component});
-      return &*own;
-    };
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-      if (in_ring[i] < ring_size && partitioned) continue;
-      const OutlineDistance* component = near_own();
-      if (component && component->distance(hull[i], limit) <= limit) continue;
-      hull_reach.vertex(hull[i], beyond);
-    }
-    if (beyond.found()) {
-      report("its hull's vertex " + point(beyond.where) + " lies " + number(beyond.value) +
-             " beyond the outline" + tau);
-      continue;
-    }
-    // A hull edge that is an edge of the component lies in the outline likewise, and one that
-    // bridges a pocket of the component's ring within the limit: the perpendicular through any
-    // point of the edge crosses the chain from one end to the other (it separates them), at a
-    // point of the outline no farther than the chain's farthest vertex from the edge's line.
-    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-      const std::size_t from = in_ring[i], to = in_ring[(i + 1) % n];
-      const bool on_component = partitioned && from < ring_size && to < ring_size &&
-                                ((from + 1 == ring_size ? 0 : from + 1) == to ||
-                                 pocket_depth(piece.component.outer, from, to) <= limit);
-      if (on_component) continue;
-      const OutlineDistance* component = near_own();
-      if (component && component->segment_within(hull[i], hull[(i + 1) % n], limit)) continue;
-      hull_reach.edge(hull[i], hull[(i + 1) % n], beyond);
-    }
-    if (beyond.found()) {
-      report("its hull's point " + point(beyond.where) + " lies " + number(beyond.value) +
-             " beyond the outline" + tau);
-    }
+    return violations;
+  }
+  std::vector<std::vector<std::string>> reports(pieces.size());
+  parallel_for(pieces.size(), workers, [&](std::size_t k, unsigned worker) {
+    check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[worker], reports[k]);
+  });
+  for (std::vector<std::string>& piece_reports : reports) {
+    std::move(piece_reports.begin(), piece_reports.end(), std::back_inserter(violations));
   }
   return violations;
 }

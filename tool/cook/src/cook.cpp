@@ -12,6 +12,7 @@
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
+#include "parallel_for.h"
 #include "sheet.h"
 #include "tile_snap.h"
 
@@ -206,35 +207,6 @@ std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces) {
   return cooked;
 }
 
-// Runs work(i) for every i below count on up to `threads` threads (the caller's included). Each
-// result goes to its own slot, so nothing depends on the thread count; the first error by index
-// is rethrown.
-void parallel_for(std::size_t count, unsigned threads,
-                  const std::function<void(std::size_t)>& work) {
-  if (threads <= 1 || count <= 1) {
-    for (std::size_t i = 0; i < count; ++i) work(i);
-    return;
-  }
-  std::vector<std::exception_ptr> errors(count);
-  std::atomic<std::size_t> next{0};
-  auto run = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      try {
-        work(i);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(threads, count); ++t) pool.emplace_back(run);
-  run();
-  for (std::thread& thread : pool) thread.join();
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
-}
-
 // The decomposition of every region of one asset, and the levels read off its
 // trees.
 class AssetDecomposer {
@@ -244,7 +216,7 @@ class AssetDecomposer {
       : settings_(settings) {
     trees_.resize(regions.size());
     parallel_for(regions.size(), threads,
-                 [&](std::size_t r) { trees_[r] = decompose(regions[r], settings); });
+                 [&](std::size_t r, unsigned) { trees_[r] = decompose(regions[r], settings); });
   }
 
   std::vector<Piece> pieces_at(double tau) const {
@@ -539,11 +511,11 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
         asset.stats.max_concavity = std::max(asset.stats.max_concavity, piece.concavity);
       }
     }
-    std::vector<CookedPiece> constrained =
-        apply_engine_limits(to_cooked(std::move(pieces)), tau, limits, split, asset.source);
+    std::vector<CookedPiece> constrained = apply_engine_limits(
+        to_cooked(std::move(pieces)), tau, limits, split, asset.source, threads);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
-    for (std::string& violation : find_contract_violations(constrained, regions, terms)) {
+    for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {
       if (level_taus.size() == 1) {
         violations.push_back(std::move(violation));
       } else {

@@ -59,10 +59,13 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 // edge (tau = 0 on a sliver there, or tau a fraction of weld): no hull within tau exists that the
 // engine would accept unchanged, so it throws InputError naming source and the piece (lower the
 // weld or raise tau) rather than drop the piece or write a hull beyond tau.
-// The pieces keep their order; a merged piece takes its neighbour's place.
+// The pieces keep their order; a merged piece takes its neighbour's place. threads: how many may
+// fit the pieces' hulls at once (split is then called from as many); the result is the same for
+// any count.
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
-                                             const SplitComponent& split, std::string_view source);
+                                             const SplitComponent& split, std::string_view source,
+                                             unsigned threads = 1);
 
 // True when hull meets the limits' vertex count, weld and collinearity rules and is a convex,
 // counter-clockwise polygon with at least 3 vertices.

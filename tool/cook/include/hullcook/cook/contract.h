@@ -35,9 +35,10 @@ struct ContractTerms {
 //  - every hull point within τ of the outline (vertices and edges, rigorously).
 // Lengths are compared with a slack for rounding only: 1e-9 of the outline's extent, or of a
 // thousandth of its largest coordinate when that is more (an outline far from the origin).
+// threads: how many may check pieces at once; the result is the same for any count.
 std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
                                                   const std::vector<Region>& outline,
-                                                  const ContractTerms& terms);
+                                                  const ContractTerms& terms, unsigned threads = 1);
 
 // Throws InputError "SOURCE: region R is too thin to cut into pieces within the output's contract
 // (area A over a length of L)" when a region of outline is itself a sliver as the contract judges
