@@ -177,16 +177,11 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
   return files;
 }
 
-Region transformed(const Region& region, const Transform& transform) {
-  Region out;
-  out.outer.reserve(region.outer.size());
-  for (Vec2 v : region.outer) out.outer.push_back(transform.apply(v));
-  for (const Ring& hole : region.holes) {
-    Ring& moved = out.holes.emplace_back();
-    moved.reserve(hole.size());
-    for (Vec2 v : hole) moved.push_back(transform.apply(v));
+void transform_in_place(Region& region, const Transform& transform) {
+  for (Vec2& v : region.outer) v = transform.apply(v);
+  for (Ring& hole : region.holes) {
+    for (Vec2& v : hole) v = transform.apply(v);
   }
-  return out;
 }
 
 std::size_t vertex_count(const std::vector<Region>& regions) {
@@ -430,26 +425,30 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.stats.decode_ms = input.decode_ms;
   asset.stats.trace_ms = input.trace_ms;
 
-  std::vector<Region> regions;
-  regions.reserve(input.regions.size());
-  for (const Region& region : input.regions)
-    regions.push_back(transformed(region, input.transform));
+  std::vector<Region> prepared = std::move(input.regions);
+  for (Region& region : prepared) transform_in_place(region, input.transform);
   // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
-  if (!regions.empty()) {
-    refuse_tiny_rings(regions, asset.source);
-    regions = clean_and_validate(std::move(regions), asset.source);
+  if (!prepared.empty()) {
+    refuse_tiny_rings(prepared, asset.source);
+    prepared = clean_and_validate(std::move(prepared), asset.source);
   }
-  refuse_huge_coordinates(regions, asset.source);
-  refuse_sliver_regions(regions, asset.source);
-  refuse_too_many_holes(regions, asset.source, asset.image_width > 0);
-  asset.regions = regions;
+  refuse_huge_coordinates(prepared, asset.source);
+  refuse_sliver_regions(prepared, asset.source);
+  refuse_too_many_holes(prepared, asset.source, asset.image_width > 0);
+  // The asset keeps the outline; the cook reads it there (one copy of it, not two).
+  asset.regions = std::move(prepared);
+  const std::vector<Region>& regions = asset.regions;
 
   // Tolerances are given in input units (or relative to R); the output is in
   // output units.
-  double radius = regions.empty() ? 0 : enclosing_radius(regions);
+  // The enclosing circle (a hull of every vertex) only when a tolerance is relative to it: it
+  // was a fiftieth of a cook.
+  std::optional<double> radius;
   double scale = input.transform.scale;
   auto resolve = [&](const Tolerance& tolerance) {
-    return tolerance.relative ? tolerance.value * radius : tolerance.value * scale;
+    if (!tolerance.relative) return tolerance.value * scale;
+    if (!radius) radius = regions.empty() ? 0 : enclosing_radius(regions);
+    return tolerance.value * *radius;
   };
   std::vector<double> level_taus{resolve(settings.tau)};
   for (const Tolerance& lod : settings.lods) level_taus.push_back(resolve(lod));
