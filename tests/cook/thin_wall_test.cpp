@@ -205,6 +205,33 @@ TEST(Issue19Fuzz, WallsJustThickerThanTheRefusalWidthAreCutWithinContract) {
   }
 }
 
+// Regions are checked on several threads when asked (issue 17): the first region's error is the
+// one thrown, whatever the count.
+TEST(Issue19Fuzz, Issue17_ThreadsRefuseTheFirstThinRegion) {
+  const double width = 0.756;
+  std::vector<Region> regions;
+  for (int k = 0; k < 30; ++k) {
+    const Vec2 at{k * 1.0, 0};
+    // Regions 12 and 24: walls far below the refusal width (about 6e-8 here); the others 0.01.
+    const double gap = (k == 11 || k == 23) ? 1e-10 : 0.01;
+    Ring outer{at, at + Vec2{width, 0}, at + Vec2{width, 0.152}, at + Vec2{0, 0.152}};
+    Ring hole = arc_above({0.6555, gap}, 0.04, 6, 0.3);
+    for (Vec2& p : hole) p += at;
+    regions.push_back(Region{outer, {hole}});
+  }
+  regions = clean_and_validate(regions, "near.poly");
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    try {
+      refuse_sliver_regions(regions, "near.poly", 1, threads);
+      ADD_FAILURE() << threads << " threads: accepted";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("near.poly: region 12 is too thin"),
+                std::string::npos)
+          << threads << " threads: " << error.what();
+    }
+  }
+}
+
 // The poly fuzzer (scripts/fuzz's fuzz_poly, 10 minutes): a 64-gon of radius 7 with two vertices
 // drawn out into spikes 6e7 and 8.3e8 long. The longer sets the rounding slack (0.83); the shorter
 // is 1.2 wide at its base, and under every measure at τ 0 and 1 % of R the piece holding its tip

@@ -347,5 +347,42 @@ TEST(CrossingCheck, AgreesWithEveryPairOnLatticeZigzags) {
   EXPECT_GT(accepted, 10);
 }
 
+// One huge image's regions are validated on several threads when asked (issue 17): the same
+// regions, and the same error (the first region's) when several are broken, whatever the count.
+TEST(CrossingCheck, Issue17_ThreadsGiveTheSameRegionsAndTheFirstRegionsError) {
+  std::vector<Region> regions;
+  for (int k = 0; k < 40; ++k) {
+    const Vec2 at{10.0 * k, 0};
+    Ring outer{at,
+               at + Vec2{8, 0},
+               at + Vec2{8, 4},
+               at + Vec2{4, 4},
+               at + Vec2{4, 4},  // repeated
+               at + Vec2{0, 4}};
+    Ring hole{at + Vec2{1, 1}, at + Vec2{1, 2}, at + Vec2{2, 2}, at + Vec2{2, 1}};
+    regions.push_back(Region{outer, {hole}});
+  }
+  const std::vector<Region> one = clean_and_validate(regions, "many.poly");
+  for (unsigned threads : {2u, 3u, 8u}) {
+    const std::vector<Region> many = clean_and_validate(regions, "many.poly", threads);
+    ASSERT_EQ(many.size(), one.size());
+    for (std::size_t r = 0; r < one.size(); ++r) {
+      EXPECT_EQ(many[r].outer, one[r].outer) << threads << " threads, region " << r;
+      EXPECT_EQ(many[r].holes, one[r].holes) << threads << " threads, region " << r;
+    }
+  }
+  // Regions 13 and 31 self-intersect (a bow tie): region 13 is named, whatever the count.
+  for (int k : {12, 30}) std::swap(regions[k].outer[1], regions[k].outer[2]);
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    try {
+      clean_and_validate(regions, "many.poly", threads);
+      ADD_FAILURE() << threads << " threads: accepted";
+    } catch (const InputError& error) {
+      EXPECT_THAT(error.what(), HasSubstr("many.poly: region 13 outer boundary: self-intersection"))
+          << threads << " threads";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

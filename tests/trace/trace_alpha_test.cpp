@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <initializer_list>
 
 namespace hullcook {
@@ -148,6 +149,33 @@ TEST(TraceAlpha, EmptyAndInconsistentImages) {
   EXPECT_EQ(empty.warnings.size(), 1u);
   AlphaImage wrong{3, 3, std::vector<std::uint8_t>(8, 255)};
   EXPECT_THROW(trace_alpha(wrong, TraceSettings{}), InputError);
+}
+
+// One huge image's rings are simplified on several threads when asked (issue 17): the same
+// regions, whatever the count.
+TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
+  AlphaImage image{300, 300, std::vector<std::uint8_t>(300 * 300, 0)};
+  for (int y = 0; y < 300; ++y) {
+    for (int x = 0; x < 300; ++x) {
+      // Blobs with wavy edges and holes in a grid of cells.
+      const double u = (x % 30) - 14.5, v = (y % 30) - 14.5, r = std::sqrt(u * u + v * v);
+      const double wave = 11 + 2 * std::sin(5 * std::atan2(v, u) + x / 30 + y / 30);
+      image.alpha[y * 300 + x] = (r < wave && r > 4) ? 255 : (r < wave + 1 ? 100 : 0);
+    }
+  }
+  TraceSettings settings;
+  settings.simplify = 0.5;
+  const TraceResult one = trace_alpha(image, settings);
+  ASSERT_GE(one.regions.size(), 100u);
+  for (unsigned threads : {2u, 3u, 8u}) {
+    settings.threads = threads;
+    const TraceResult many = trace_alpha(image, settings);
+    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
+    for (std::size_t r = 0; r < one.regions.size(); ++r) {
+      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
+      EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
+    }
+  }
 }
 
 }  // namespace

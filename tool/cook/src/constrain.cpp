@@ -1,8 +1,8 @@
 #include "hullcook/cook/constrain.h"
 
 #include "hull_fitter.h"
+#include "hullcook/core/parallel_for.h"
 #include "outline_distance.h"
-#include "parallel_for.h"
 #include "piece_merge.h"
 #include "small_hull.h"
 

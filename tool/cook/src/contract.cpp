@@ -1,8 +1,8 @@
 #include "hullcook/cook/contract.h"
 
 #include "cell_grid.h"
+#include "hullcook/core/parallel_for.h"
 #include "outline_distance.h"
-#include "parallel_for.h"
 
 #include "hullcook/core/clean.h"
 #include "hullcook/core/error.h"
@@ -725,8 +725,9 @@ void check_piece(std::size_t k, const CookedPiece& piece, const ContractTerms& t
   }
 }
 
-// Below this many pieces, checking them costs less than starting a thread.
+// Below this many pieces or regions, checking them costs less than starting a thread.
 constexpr std::size_t kPiecesWorthAThread = 16;
+constexpr std::size_t kRegionsWorthAThread = 8;
 
 }  // namespace
 
@@ -775,21 +776,25 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 }
 
 void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
-                           std::size_t first_region_number) {
+                           std::size_t first_region_number, unsigned threads) {
   if (outline.empty()) return;
   const double slack = rounding_slack(outline);
-  for (std::size_t r = 0; r < outline.size(); ++r) {
-    if (const std::optional<std::string> sliver = sliver_defect(outline[r], slack)) {
-      throw InputError(source + ": region " + std::to_string(first_region_number + r) +
-                       " is too thin to cut into pieces within the output's contract (" + *sliver +
-                       ")");
-    }
-    if (const std::optional<std::string> wall = thin_wall_defect(outline[r], slack)) {
-      throw InputError(source + ": region " + std::to_string(first_region_number + r) +
-                       " is too thin to cut into pieces within the output's contract (" + *wall +
-                       ")");
-    }
-  }
+  // Each region on its own; the first error by region is the one thrown, whatever the threads.
+  parallel_for(
+      outline.size(), threads,
+      [&](std::size_t r, unsigned) {
+        if (const std::optional<std::string> sliver = sliver_defect(outline[r], slack)) {
+          throw InputError(source + ": region " + std::to_string(first_region_number + r) +
+                           " is too thin to cut into pieces within the output's contract (" +
+                           *sliver + ")");
+        }
+        if (const std::optional<std::string> wall = thin_wall_defect(outline[r], slack)) {
+          throw InputError(source + ": region " + std::to_string(first_region_number + r) +
+                           " is too thin to cut into pieces within the output's contract (" +
+                           *wall + ")");
+        }
+      },
+      kRegionsWorthAThread);
 }
 
 void enforce_contract(const std::string& source, const std::vector<std::string>& violations) {

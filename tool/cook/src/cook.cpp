@@ -10,9 +10,9 @@
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/parallel_for.h"
 #include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
-#include "parallel_for.h"
 #include "sheet.h"
 #include "tile_snap.h"
 
@@ -297,7 +297,8 @@ Vec2 pivot_of(const InputFile& file, const Settings& settings) {
   return Vec2{settings.pivot_u, settings.pivot_v};
 }
 
-PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
+// threads: how many may trace this one image.
+PreparedInput prepare_image(const InputFile& file, const Settings& settings, unsigned threads) {
   auto start = Clock::now();
   PreparedInput prepared;
   AlphaImage image = file.frames  ? frame_image(*file.sheet, file.frames->frames[file.frame])
@@ -312,14 +313,18 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings) {
     if (settings.tau.relative) {
       // τ depends on the outline's radius: measure it on a finely simplified
       // trace first.
-      TraceResult fine = trace_alpha(image, trace_settings(settings, 0.05));
+      TraceSettings fine_settings = trace_settings(settings, 0.05);
+      fine_settings.threads = threads;
+      TraceResult fine = trace_alpha(image, fine_settings);
       double radius = fine.regions.empty() ? 0 : enclosing_radius(fine.regions);
       simplify = default_simplify(settings.tau.resolve(radius));
     } else {
       simplify = default_simplify(settings.tau.value);
     }
   }
-  TraceResult traced = trace_alpha(image, trace_settings(settings, simplify));
+  TraceSettings tracing = trace_settings(settings, simplify);
+  tracing.threads = threads;
+  TraceResult traced = trace_alpha(image, tracing);
   prepared.regions = std::move(traced.regions);
   prepared.traced_vertices = traced.traced_vertices;
   prepared.warnings = std::move(traced.warnings);
@@ -406,8 +411,8 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   // A project file's rules and the image's sidecar may change its settings (asset_settings.h).
   const std::shared_ptr<const Settings> own = asset_settings.for_input(file.path);
   const Settings& settings = own ? *own : given;
-  PreparedInput input =
-      is_poly_file(file.path) ? prepare_polygons(file, settings) : prepare_image(file, settings);
+  PreparedInput input = is_poly_file(file.path) ? prepare_polygons(file, settings)
+                                                : prepare_image(file, settings, threads);
   CookedAsset asset;
   asset.name = file.name;
   asset.source = std::filesystem::path(file.path).generic_string();
@@ -430,10 +435,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
   if (!prepared.empty()) {
     refuse_tiny_rings(prepared, asset.source);
-    prepared = clean_and_validate(std::move(prepared), asset.source);
+    prepared = clean_and_validate(std::move(prepared), asset.source, threads);
   }
   refuse_huge_coordinates(prepared, asset.source);
-  refuse_sliver_regions(prepared, asset.source);
+  refuse_sliver_regions(prepared, asset.source, 1, threads);
   refuse_too_many_holes(prepared, asset.source, asset.image_width > 0);
   // The asset keeps the outline; the cook reads it there (one copy of it, not two).
   asset.regions = std::move(prepared);

@@ -2,6 +2,7 @@
 
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/parallel_for.h"
 #include "hullcook/core/predicates.h"
 #include "predicates_inline.h"
 
@@ -239,6 +240,9 @@ constexpr double kLargestCoordinate = 1e150;
 // and below about 1e-155 invalid, pieces than the same ring scaled up.
 constexpr double kSmallestSpan = 1e-140;
 
+// Below this many regions, validating them costs less than starting a thread.
+constexpr std::size_t kRegionsWorthAThread = 8;
+
 }  // namespace
 
 void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view source) {
@@ -261,108 +265,115 @@ void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view sour
   }
 }
 
-std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source) {
+std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source,
+                                       unsigned threads) {
   const std::string file(source);
   if (regions.empty()) throw InputError(file + ": no polygon");
-  for (std::size_t r = 0; r < regions.size(); ++r) {
-    Region& region = regions[r];
-    const std::string region_name = "region " + std::to_string(r + 1);
-    auto ring_name = [&](int ring) {
-      return ring == 0 ? region_name + " outer boundary"
-                       : region_name + " hole " + std::to_string(ring);
-    };
-    auto fail = [&](const std::string& problem) -> void {
-      throw InputError(file + ": " + problem);
-    };
-    // Only finite points are oriented: a ring with another fails before its first test.
-    const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
-    auto clean_ring = [&](Ring& ring, int ring_index) {
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
-          fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
-               " has a NaN or infinite coordinate");
+  // Each region on its own; the first error by region is the one thrown, whatever the threads.
+  parallel_for(
+      regions.size(), threads,
+      [&](std::size_t r, unsigned) {
+        Region& region = regions[r];
+        const std::string region_name = "region " + std::to_string(r + 1);
+        auto ring_name = [&](int ring) {
+          return ring == 0 ? region_name + " outer boundary"
+                           : region_name + " hole " + std::to_string(ring);
+        };
+        auto fail = [&](const std::string& problem) -> void {
+          throw InputError(file + ": " + problem);
+        };
+        // Only finite points are oriented: a ring with another fails before its first test.
+        const detail::CoordinateBound coordinate_bound(detail::max_abs_coordinate(region));
+        auto clean_ring = [&](Ring& ring, int ring_index) {
+          for (std::size_t i = 0; i < ring.size(); ++i) {
+            if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
+              fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
+                   " has a NaN or infinite coordinate");
+            }
+            // Beyond it the orientation predicates' products overflow.
+            if (std::abs(ring[i].x) > kLargestCoordinate ||
+                std::abs(ring[i].y) > kLargestCoordinate) {
+              fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
+                   " has a coordinate too large (beyond 1e150 in magnitude)");
+            }
+          }
+          remove_degenerate_vertices_in_place(ring);
+          if (ring.size() < 3) {
+            fail(ring_name(ring_index) +
+                 ": fewer than 3 distinct points after removing repeated and collinear vertices");
+          }
+          // Zero area with 3 non-collinear points means the ring meets itself: reported below. Once
+          // the rings are known to be simple, their orientation is settled exactly.
+          const double area = signed_area(ring);
+          const bool want_ccw = ring_index == 0;
+          if (area != 0.0 && (area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
+        };
+        clean_ring(region.outer, 0);
+        for (std::size_t h = 0; h < region.holes.size(); ++h) {
+          clean_ring(region.holes[h], static_cast<int>(h + 1));
         }
-        // Beyond it the orientation predicates' products overflow.
-        if (std::abs(ring[i].x) > kLargestCoordinate || std::abs(ring[i].y) > kLargestCoordinate) {
-          fail(ring_name(ring_index) + ": vertex " + std::to_string(i + 1) +
-               " has a coordinate too large (beyond 1e150 in magnitude)");
-        }
-      }
-      remove_degenerate_vertices_in_place(ring);
-      if (ring.size() < 3) {
-        fail(ring_name(ring_index) +
-             ": fewer than 3 distinct points after removing repeated and collinear vertices");
-      }
-      // Zero area with 3 non-collinear points means the ring meets itself: reported below. Once
-      // the rings are known to be simple, their orientation is settled exactly.
-      const double area = signed_area(ring);
-      const bool want_ccw = ring_index == 0;
-      if (area != 0.0 && (area > 0.0) != want_ccw) std::reverse(ring.begin(), ring.end());
-    };
-    clean_ring(region.outer, 0);
-    for (std::size_t h = 0; h < region.holes.size(); ++h) {
-      clean_ring(region.holes[h], static_cast<int>(h + 1));
-    }
 
-    std::vector<Edge> edges;
-    std::vector<std::size_t> ring_sizes;
-    std::size_t edge_count = region.outer.size();
-    for (const Ring& hole : region.holes) edge_count += hole.size();
-    edges.reserve(edge_count);
-    ring_sizes.reserve(1 + region.holes.size());
-    auto add_edges = [&](const Ring& ring, int ring_index) {
-      ring_sizes.push_back(ring.size());
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        edges.push_back({ring_index, i, ring[i], ring[(i + 1) % ring.size()]});
-      }
-    };
-    add_edges(region.outer, 0);
-    for (std::size_t h = 0; h < region.holes.size(); ++h) {
-      add_edges(region.holes[h], static_cast<int>(h + 1));
-    }
-    if (const auto crossing = find_crossing(edges, ring_sizes)) {
-      const Edge& e = *crossing->first;
-      const Edge& f = *crossing->second;
-      const std::string where = " (edge " + format_point(e.a) + "-" + format_point(e.b) +
-                                " meets edge " + format_point(f.a) + "-" + format_point(f.b) + ")";
-      if (e.ring == f.ring) {
-        fail(ring_name(e.ring) + ": self-intersection" + where);
-      } else if (e.ring == 0) {
-        fail(ring_name(f.ring) + " crosses or touches the outer boundary" + where);
-      } else {
-        fail(region_name + ": holes " + std::to_string(e.ring) + " and " + std::to_string(f.ring) +
-             " cross or touch" + where);
-      }
-    }
-    auto orient_exactly = [&](Ring& ring, int ring_index) {
-      const int turn = ring_orientation(ring);
-      if (turn == 0) fail(ring_name(ring_index) + ": zero area");
-      if ((turn > 0) != (ring_index == 0)) std::reverse(ring.begin(), ring.end());
-    };
-    orient_exactly(region.outer, 0);
-    for (std::size_t h = 0; h < region.holes.size(); ++h) {
-      orient_exactly(region.holes[h], static_cast<int>(h + 1));
-    }
-    // No boundaries meet, so one vertex decides containment.
-    std::vector<Box> boxes;
-    for (std::size_t h = 0; h < region.holes.size(); ++h) {
-      const Ring& hole = region.holes[h];
-      if (locate_point(region.outer, hole[0]) != Location::inside) {
-        fail(ring_name(static_cast<int>(h + 1)) + " is outside the outer boundary");
-      }
-      boxes.push_back(box_of(hole));
-    }
-    for (std::size_t a = 0; a < region.holes.size(); ++a) {
-      for (std::size_t b = a + 1; b < region.holes.size(); ++b) {
-        if (!boxes[a].overlaps(boxes[b])) continue;
-        if (locate_point(region.holes[b], region.holes[a][0]) == Location::inside ||
-            locate_point(region.holes[a], region.holes[b][0]) == Location::inside) {
-          fail(region_name + ": holes " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
-               " overlap");
+        std::vector<Edge> edges;
+        std::vector<std::size_t> ring_sizes;
+        std::size_t edge_count = region.outer.size();
+        for (const Ring& hole : region.holes) edge_count += hole.size();
+        edges.reserve(edge_count);
+        ring_sizes.reserve(1 + region.holes.size());
+        auto add_edges = [&](const Ring& ring, int ring_index) {
+          ring_sizes.push_back(ring.size());
+          for (std::size_t i = 0; i < ring.size(); ++i) {
+            edges.push_back({ring_index, i, ring[i], ring[(i + 1) % ring.size()]});
+          }
+        };
+        add_edges(region.outer, 0);
+        for (std::size_t h = 0; h < region.holes.size(); ++h) {
+          add_edges(region.holes[h], static_cast<int>(h + 1));
         }
-      }
-    }
-  }
+        if (const auto crossing = find_crossing(edges, ring_sizes)) {
+          const Edge& e = *crossing->first;
+          const Edge& f = *crossing->second;
+          const std::string where = " (edge " + format_point(e.a) + "-" + format_point(e.b) +
+                                    " meets edge " + format_point(f.a) + "-" + format_point(f.b) +
+                                    ")";
+          if (e.ring == f.ring) {
+            fail(ring_name(e.ring) + ": self-intersection" + where);
+          } else if (e.ring == 0) {
+            fail(ring_name(f.ring) + " crosses or touches the outer boundary" + where);
+          } else {
+            fail(region_name + ": holes " + std::to_string(e.ring) + " and " +
+                 std::to_string(f.ring) + " cross or touch" + where);
+          }
+        }
+        auto orient_exactly = [&](Ring& ring, int ring_index) {
+          const int turn = ring_orientation(ring);
+          if (turn == 0) fail(ring_name(ring_index) + ": zero area");
+          if ((turn > 0) != (ring_index == 0)) std::reverse(ring.begin(), ring.end());
+        };
+        orient_exactly(region.outer, 0);
+        for (std::size_t h = 0; h < region.holes.size(); ++h) {
+          orient_exactly(region.holes[h], static_cast<int>(h + 1));
+        }
+        // No boundaries meet, so one vertex decides containment.
+        std::vector<Box> boxes;
+        for (std::size_t h = 0; h < region.holes.size(); ++h) {
+          const Ring& hole = region.holes[h];
+          if (locate_point(region.outer, hole[0]) != Location::inside) {
+            fail(ring_name(static_cast<int>(h + 1)) + " is outside the outer boundary");
+          }
+          boxes.push_back(box_of(hole));
+        }
+        for (std::size_t a = 0; a < region.holes.size(); ++a) {
+          for (std::size_t b = a + 1; b < region.holes.size(); ++b) {
+            if (!boxes[a].overlaps(boxes[b])) continue;
+            if (locate_point(region.holes[b], region.holes[a][0]) == Location::inside ||
+                locate_point(region.holes[a], region.holes[b][0]) == Location::inside) {
+              fail(region_name + ": holes " + std::to_string(a + 1) + " and " +
+                   std::to_string(b + 1) + " overlap");
+            }
+          }
+        }
+      },
+      kRegionsWorthAThread);
   return regions;
 }
 

@@ -3,6 +3,7 @@
 #include "rings.h"
 
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/parallel_for.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -64,9 +65,16 @@ struct Segment {
 
 class Simplifier {
  public:
-  Simplifier(const std::vector<Ring>& rings, double eps) : rings_(rings), eps_(eps) {
+  // Each ring is first simplified on its own, on up to threads threads (the rings' results do
+  // not depend on each other).
+  Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads)
+      : rings_(rings), eps_(eps) {
     keep_.resize(rings.size());
-    for (std::size_t r = 0; r < rings.size(); ++r) start(static_cast<int>(r));
+    std::vector<std::vector<std::pair<int, int>>> stacks(std::max(1u, threads));
+    parallel_for(
+        rings.size(), threads,
+        [&](std::size_t r, unsigned worker) { start(static_cast<int>(r), stacks[worker]); },
+        kRingsWorthAThread);
   }
 
   // Refines until no two simplified edges cross or touch. Returns false if it gave up on some
@@ -115,7 +123,12 @@ class Simplifier {
     return (s.to - s.from - 1 + size(s.ring)) % size(s.ring);
   }
 
-  void start(int r) {
+  // Below this many rings, simplifying them costs less than starting a thread.
+  static constexpr std::size_t kRingsWorthAThread = 16;
+
+  using Stack = std::vector<std::pair<int, int>>;
+
+  void start(int r, Stack& stack) {
     const Ring& ring = rings_[r];
     const int n = size(r);
     keep_[r].assign(n, eps_ > 0 ? 0 : 1);
@@ -134,8 +147,8 @@ class Simplifier {
     }
     const int b = from_a.index();
     keep_[r][a] = keep_[r][b] = 1;
-    douglas_peucker(r, a, b);
-    douglas_peucker(r, b, a);
+    douglas_peucker(r, a, b, stack);
+    douglas_peucker(r, b, a, stack);
     if (std::count(keep_[r].begin(), keep_[r].end(), 1) < 3) {
       // Never collapse a ring: keep its vertex farthest from the chord.
       int m = farthest_interior({r, a, b});
@@ -157,8 +170,8 @@ class Simplifier {
     return farthest.index();
   }
 
-  void douglas_peucker(int r, int from, int to) {
-    std::vector<std::pair<int, int>>& stack = peucker_stack_;
+  // stack: scratch, reused.
+  void douglas_peucker(int r, int from, int to, Stack& stack) {
     stack.assign(1, {from, to});
     while (!stack.empty()) {
       auto [i, j] = stack.back();
@@ -178,8 +191,8 @@ class Simplifier {
     int m = farthest_interior(s);
     if (m < 0 || keep_[s.ring][m]) return;
     keep_[s.ring][m] = 1;
-    douglas_peucker(s.ring, s.from, m);
-    douglas_peucker(s.ring, m, s.to);
+    douglas_peucker(s.ring, s.from, m, peucker_stack_);
+    douglas_peucker(s.ring, m, s.to, peucker_stack_);
   }
 
   std::vector<Segment> all_segments() const {
@@ -443,8 +456,8 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
 }
 
 std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
-                                 double eps) {
-  Simplifier simplifier(rings, eps);
+                                 double eps, unsigned threads) {
+  Simplifier simplifier(rings, eps, threads);
   std::vector<Ring> result;
   while (true) {
     simplifier.untangle();

@@ -19,7 +19,8 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings);
 // eps of the simplified ring), keeping the rings simple, disjoint and nested as before, each with
 // at least 3 vertices and its orientation. parents is nesting_parents(rings).
 // Also removes collinear vertices (which does not move the outline). eps = 0 only does that.
+// threads: how many may simplify rings at once; the result is the same for any count.
 std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
-                                 double eps);
+                                 double eps, unsigned threads = 1);
 
 }  // namespace hullcook::trace_detail

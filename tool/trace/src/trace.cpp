@@ -215,7 +215,7 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
     if (kept[r]) kept_parents.push_back(parents[r] >= 0 ? new_index[parents[r]] : -1);
   }
   std::vector<Ring> simplified =
-      simplify_rings(kept_rings, kept_parents, std::max(0.0, settings.simplify));
+      simplify_rings(kept_rings, kept_parents, std::max(0.0, settings.simplify), settings.threads);
 
   std::vector<int> region_of(simplified.size(), -1);
   for (std::size_t r = 0; r < simplified.size(); ++r) {

@@ -47,9 +47,10 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 // comes within D of the outer boundary at (x, y), a wall no thicker than W)" / "(the outer
 // boundary comes within D of itself at (x, y), a spike or neck no wider than W)" when two rings,
 // or one ring's two sides, come within twice the sliver width of an edge: at the contract's
-// resolution they touch. Regions are numbered from first_region_number.
+// resolution they touch. Regions are numbered from first_region_number. threads: how many may
+// check regions at once; the error thrown (the first region's) is the same for any count.
 void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
-                           std::size_t first_region_number = 1);
+                           std::size_t first_region_number = 1, unsigned threads = 1);
 
 // Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
 // more)" when there are violations.

@@ -13,8 +13,11 @@ namespace hullcook {
 // for: NaN or infinite coordinates, fewer than 3 distinct points, zero area, self-intersection
 // (or self-touching), a hole crossing, touching or outside its outer boundary, holes crossing,
 // touching or nested in each other. Regions are not checked against each other.
-// Self-intersection is found with a uniform grid: near-linear on ordinary rings.
-std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source);
+// Self-intersection is found with a uniform grid: near-linear on ordinary rings. threads: how many
+// may validate regions at once; the result, and the error thrown (the first region's), are the
+// same for any count.
+std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source,
+                                       unsigned threads = 1);
 
 // Throws InputError "source: region R hole H: too small: ..." for a ring whose bounding box's
 // larger side is above 0 and below 1e-140: there the orientation tests' products of coordinate

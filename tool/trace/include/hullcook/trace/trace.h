@@ -39,6 +39,7 @@ struct TraceSettings {
   double min_hole_area = 4.0;  // [px²] holes with a smaller traced area are filled
   double simplify = 0.5;       // [px] error bound of ring simplification; 0 = none
   std::uint64_t max_pixels = 64ull * 1000 * 1000;  // larger images are refused before decoding
+  unsigned threads = 1;  // how many may simplify rings at once; the result is the same for any
 };
 
 // An image reduced to its 8-bit alpha channel (after the colour key, if any).
