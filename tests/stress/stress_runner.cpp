@@ -1,5 +1,6 @@
 #include "stress_runner.h"
 
+#include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/constrain.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/poly_io.h"
@@ -64,8 +65,36 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
       outcome.report.eps = report.eps;
     }
     outcome.check_ms = milliseconds_since(start);
+    // One image alone splits its work over the cook's threads (issue 17): the bytes must not
+    // depend on how many.
+    Settings threaded = cook_settings;
+    threaded.threads = 3;
+    std::string threaded_bytes, threaded_error;
+    try {
+      threaded_bytes = write_bundle(cook({input}, threaded).assets);
+    } catch (const std::exception& error) {
+      threaded_error = error.what();
+    }
+    if (!threaded_error.empty() || threaded_bytes != write_bundle(result.assets)) {
+      const std::string rule = "3 threads change the output";
+      ++outcome.report.counts[rule];
+      outcome.report.examples.push_back({rule, threaded_error.empty()
+                                                   ? "the bundles differ"
+                                                   : "3 threads threw: " + threaded_error});
+    }
   } catch (const std::exception& error) {
     outcome.error = error.what();
+    // The same error with 3 threads (the first region's, whatever the count).
+    Settings threaded = cook_settings;
+    threaded.threads = 3;
+    try {
+      write_bundle(cook({input}, threaded).assets);
+      outcome.error += " (but 3 threads cooked it)";
+    } catch (const std::exception& threaded_error) {
+      if (outcome.error != threaded_error.what()) {
+        outcome.error += " (3 threads threw another: " + std::string(threaded_error.what()) + ")";
+      }
+    }
   }
   return outcome;
 }
