@@ -208,28 +208,20 @@ class AssetDecomposer {
  public:
   AssetDecomposer(const std::vector<Region>& regions, const DecomposeSettings& settings,
                   unsigned threads)
-      : settings_(settings) {
+      : settings_(settings), threads_(threads) {
     trees_.resize(regions.size());
     parallel_for(regions.size(), threads,
                  [&](std::size_t r, unsigned) { trees_[r] = decompose(regions[r], settings); });
   }
 
   std::vector<Piece> pieces_at(double tau) const {
-    std::vector<Piece> pieces;
-    for (const DecompositionTree& tree : trees_) {
-      std::vector<Piece> part = tree.pieces_at(tau);
-      std::move(part.begin(), part.end(), std::back_inserter(pieces));
-    }
-    return pieces;
+    return joined([&](std::size_t r) { return trees_[r].pieces_at(tau); });
   }
 
   // The same, for the last level read: the pieces' components are moved out of the trees.
   std::vector<Piece> take_pieces_at(double tau) {
-    std::vector<Piece> pieces;
-    for (DecompositionTree& tree : trees_) {
-      std::vector<Piece> part = std::move(tree).pieces_at(tau);
-      std::move(part.begin(), part.end(), std::back_inserter(pieces));
-    }
+    std::vector<Piece> pieces =
+        joined([&](std::size_t r) { return std::move(trees_[r]).pieces_at(tau); });
     trees_.clear();
     return pieces;
   }
@@ -258,7 +250,23 @@ class AssetDecomposer {
   }
 
  private:
+  // The pieces read off each tree (on the threads), in the trees' order.
+  template <typename Read>
+  std::vector<Piece> joined(const Read& read) const {
+    std::vector<std::vector<Piece>> parts(trees_.size());
+    parallel_for(trees_.size(), threads_, [&](std::size_t r, unsigned) { parts[r] = read(r); });
+    std::size_t count = 0;
+    for (const std::vector<Piece>& part : parts) count += part.size();
+    std::vector<Piece> pieces;
+    pieces.reserve(count);
+    for (std::vector<Piece>& part : parts) {
+      std::move(part.begin(), part.end(), std::back_inserter(pieces));
+    }
+    return pieces;
+  }
+
   DecomposeSettings settings_;
+  unsigned threads_;
   std::vector<DecompositionTree> trees_;
 };
 
