@@ -3,8 +3,8 @@
 //   1. process start-up: `hullcook --version` and a cook of one 64x64 sprite beside /bin/true;
 //   2. the decode floor (libpng's png_read_image / libwebp's decoder alone, file read included)
 //      and hullcook's own decoding against it;
-//   3. each stage after decoding (trace, decompose, clean + engine limits, writing) and its ratio
-//      to the decode floor, one thread;
+//   3. each stage after decoding (trace, decompose, clean, engine limits, contract check,
+//      writing) and its ratio to the decode floor, one thread;
 //   4. the whole cook with 1 and 2 threads (and of the heaviest image alone, which its threads
 //      split per region and per piece), and the peak memory of the cooking process;
 //   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent).
@@ -520,7 +520,7 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
     CookResult result = cook(files, cook_settings(1));
     if (best.empty()) {
       CookedStats none;
-      none.decode_ms = none.trace_ms = none.decompose_ms = none.total_ms = 1e300;
+      none.decode_ms = none.trace_ms = none.decompose_ms = none.contract_ms = none.total_ms = 1e300;
       best.resize(result.assets.size(), none);
     }
     for (std::size_t i = 0; i < result.assets.size(); ++i) {
@@ -528,20 +528,21 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
       best[i].decode_ms = std::min(best[i].decode_ms, s.decode_ms);
       best[i].trace_ms = std::min(best[i].trace_ms, s.trace_ms);
       best[i].decompose_ms = std::min(best[i].decompose_ms, s.decompose_ms);
-      best[i].total_ms =
-          std::min(best[i].total_ms, s.total_ms - s.decode_ms - s.trace_ms - s.decompose_ms);
+      best[i].contract_ms = std::min(best[i].contract_ms, s.contract_ms);
+      best[i].total_ms = std::min(
+          best[i].total_ms, s.total_ms - s.decode_ms - s.trace_ms - s.decompose_ms - s.contract_ms);
     }
   }
-  double trace = 0, decompose = 0, rest = 0;
+  double trace = 0, decompose = 0, contract = 0, rest = 0;
   for (const CookedStats& s : best)
-    trace += s.trace_ms, decompose += s.decompose_ms, rest += s.total_ms;
+    trace += s.trace_ms, decompose += s.decompose_ms, contract += s.contract_ms, rest += s.total_ms;
   const CookResult result = cook(files, cook_settings(1));
   // The asset that takes longest, for the cook of one huge image alone (section 4).
   fs::path heaviest;
   double heaviest_ms = -1;
   for (std::size_t i = 0; i < best.size(); ++i) {
     const CookedStats& s = best[i];
-    const double ms = s.decode_ms + s.trace_ms + s.decompose_ms + s.total_ms;
+    const double ms = s.decode_ms + s.trace_ms + s.decompose_ms + s.contract_ms + s.total_ms;
     if (ms > heaviest_ms) heaviest_ms = ms, heaviest = result.assets[i].source;
   }
   const fs::path out = scratch / "bench.hcb";
@@ -562,12 +563,13 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
     });
   }
   rest = std::max(0.0, rest - clean);
-  const double after = trace + decompose + clean + rest + write;
+  const double after = trace + decompose + clean + rest + contract + write;
   report("3. Stages after decoding, one thread (ms, and x the decode floor):\n");
   report("   trace (march, nesting, simplify)  %8.2f  %5.2fx\n", trace, trace / floor_ms);
   report("   decompose                         %8.2f  %5.2fx\n", decompose, decompose / floor_ms);
   report("   clean (validation)                %8.2f  %5.2fx\n", clean, clean / floor_ms);
   report("   engine limits + other             %8.2f  %5.2fx\n", rest, rest / floor_ms);
+  report("   contract check (every level)      %8.2f  %5.2fx\n", contract, contract / floor_ms);
   report("   write .hcb                        %8.2f  %5.2fx\n", write, write / floor_ms);
   report("   all after decoding                %8.2f  %5.2fx   (target <= 1x)\n", after,
          after / floor_ms);
