@@ -232,6 +232,23 @@ TEST(Issue19Fuzz, Issue17_ThreadsRefuseTheFirstThinRegion) {
   }
 }
 
+// The poly fuzzer (scripts/fuzz, 60 s, in issue 17's session): the rectangle with five hexagonal
+// holes, the second of which has an edge two ulps long, and the others' bottom vertices on a line.
+// Every cut from an end of that edge passed within the graze width of its other end, so every
+// cut from that notch grazed, and the fallback cut along the line of the holes' bottoms; it left a
+// needle 1.3e-10 thin, which came out a piece of its own (a sliver: area 9.6e-12 over a length of
+// 0.151), and `decompose` exited 4 under every measure. A vertex within the graze width of a
+// cut's end is at that end, and no longer grazes.
+TEST(Issue17Fuzz, EdgeOfTwoUlpsAtANotchIsCutWithinContract) {
+  const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) /
+                    "tests/core/data/issue17_fuzz_edge_of_two_ulps.poly";
+  const std::vector<Region> regions = clean_and_validate(read_poly_file(path), "two_ulps.poly");
+  ASSERT_EQ(regions.size(), 1u);
+  ASSERT_EQ(regions[0].holes.size(), 5u);
+  ASSERT_NO_THROW(refuse_sliver_regions(regions, "two_ulps.poly"));  // valid input
+  expect_cut_within_contract(regions[0], "two ulps");
+}
+
 // The poly fuzzer (scripts/fuzz's fuzz_poly, 10 minutes): a 64-gon of radius 7 with two vertices
 // drawn out into spikes 6e7 and 8.3e8 long. The longer sets the rounding slack (0.83); the shorter
 // is 1.2 wide at its base, and under every measure at τ 0 and 1 % of R the piece holding its tip

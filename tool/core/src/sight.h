@@ -30,18 +30,27 @@ struct Graze {
     grazing = width * span;
     // The segment's box, widened so that it holds the vertices that graze it.
     const double reach = width;
+    at_an_end = width * width;
     min_x = std::min(a.x, b.x) - reach, max_x = std::max(a.x, b.x) + reach;
     min_y = std::min(a.y, b.y) - reach, max_y = std::max(a.y, b.y) + reach;
   }
-  // c is not an end of the segment.
+  // c is not an end of the segment. A vertex within the width of an end is at that end, to this
+  // resolution, and passing it leaves no sliver: every cut from an end of an edge a few ulps long
+  // passed its other end, and the notch was cut along a long edge instead (the fuzzer's
+  // rectangle of hexagons, whose needle came out a sliver piece).
   bool by(Vec2 c) const {
     const Vec2 offset = c - a;
     const double projection = offset.x * along.x + offset.y * along.y;
-    return projection > 0.0 && projection < squared &&
-           std::abs(along.x * offset.y - along.y * offset.x) <= grazing;
+    if (!(projection > 0.0 && projection < squared &&
+          std::abs(along.x * offset.y - along.y * offset.x) <= grazing)) {
+      return false;
+    }
+    const Vec2 from_b = c - b;
+    return offset.x * offset.x + offset.y * offset.y > at_an_end &&
+           from_b.x * from_b.x + from_b.y * from_b.y > at_an_end;
   }
   Vec2 a, b, along;
-  double squared, grazing, min_x, max_x, min_y, max_y;
+  double squared, grazing, at_an_end, min_x, max_x, min_y, max_y;
 };
 
 class RegionView {
