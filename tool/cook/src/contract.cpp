@@ -758,13 +758,16 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   // Each piece on its own (the work splits over threads), its reports in the pieces' order.
   const unsigned workers = static_cast<unsigned>(
       std::max<std::size_t>(1, std::min<std::size_t>(threads, pieces.size())));
-  std::vector<PieceChecker> checkers(workers, PieceChecker(outline, limit));
   if (workers == 1 || pieces.size() < kPiecesWorthAThread) {
+    PieceChecker checker(outline, limit);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
-      check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[0], violations);
+      check_piece(k, pieces[k], terms, slack, tau, partitioned, checker, violations);
     }
     return violations;
   }
+  // A checker per worker: the whole outline's distances keep scratch of their own, so each
+  // worker that needs them builds them (most pieces are proven by their own component).
+  std::vector<PieceChecker> checkers(workers, PieceChecker(outline, limit));
   std::vector<std::vector<std::string>> reports(pieces.size());
   parallel_for(pieces.size(), workers, [&](std::size_t k, unsigned worker) {
     check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[worker], reports[k]);

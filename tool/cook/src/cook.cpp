@@ -254,7 +254,9 @@ class AssetDecomposer {
   template <typename Read>
   std::vector<Piece> joined(const Read& read) const {
     std::vector<std::vector<Piece>> parts(trees_.size());
-    parallel_for(trees_.size(), threads_, [&](std::size_t r, unsigned) { parts[r] = read(r); });
+    parallel_for(
+        trees_.size(), threads_, [&](std::size_t r, unsigned) { parts[r] = read(r); },
+        kTreesWorthAThread);
     std::size_t count = 0;
     for (const std::vector<Piece>& part : parts) count += part.size();
     std::vector<Piece> pieces;
@@ -264,6 +266,9 @@ class AssetDecomposer {
     }
     return pieces;
   }
+
+  // Below this many trees, reading them costs less than starting a thread.
+  static constexpr std::size_t kTreesWorthAThread = 16;
 
   DecomposeSettings settings_;
   unsigned threads_;

@@ -70,7 +70,8 @@ class Simplifier {
   Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads)
       : rings_(rings), eps_(eps) {
     keep_.resize(rings.size());
-    std::vector<std::vector<std::pair<int, int>>> stacks(std::max(1u, threads));
+    const bool threaded = threads > 1 && rings.size() >= kRingsWorthAThread;
+    std::vector<Stack> stacks(threaded ? threads : 1);
     parallel_for(
         rings.size(), threads,
         [&](std::size_t r, unsigned worker) { start(static_cast<int>(r), stacks[worker]); },

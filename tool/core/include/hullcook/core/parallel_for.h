@@ -10,7 +10,8 @@ namespace hullcook {
 // (worker: which of them, below min(threads, count), for scratch kept per worker). Each i's result
 // must go to its own slot, so that nothing depends on the thread count. Below min_count items the
 // caller does them all: a thread costs more than small work. The first exception by index is
-// rethrown after every item has run.
+// rethrown, once every item before it has run (items after it may be skipped). When the system
+// refuses a thread, the threads it started do the work.
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t index, unsigned worker)>& work,
                   std::size_t min_count = 2);

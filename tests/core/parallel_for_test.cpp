@@ -1,0 +1,52 @@
+// parallel_for (issue 17: one image's regions, rings and pieces split over the cook's threads):
+// every item done once, in its own slot, and the error thrown the first by index whatever the
+// thread count.
+#include "hullcook/core/parallel_for.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hullcook {
+namespace {
+
+TEST(ParallelFor, EveryItemOnceWithAWorkerBelowTheThreadCount) {
+  for (unsigned threads : {1u, 2u, 3u, 8u, 64u}) {
+    for (std::size_t count : {0u, 1u, 2u, 15u, 16u, 1000u}) {
+      std::vector<int> done(count, 0);
+      std::atomic<bool> worker_in_range{true};
+      parallel_for(
+          count, threads,
+          [&](std::size_t i, unsigned worker) {
+            ++done[i];
+            if (worker >= threads || worker >= count) worker_in_range = false;
+          },
+          16);
+      EXPECT_EQ(done, std::vector<int>(count, 1)) << threads << " threads, " << count;
+      EXPECT_TRUE(worker_in_range) << threads << " threads, " << count;
+    }
+  }
+}
+
+TEST(ParallelFor, TheFirstErrorByIndexIsThrownAfterEveryItemBeforeIt) {
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    std::vector<std::atomic<int>> done(500);
+    try {
+      parallel_for(500, threads, [&](std::size_t i, unsigned) {
+        ++done[i];
+        if (i == 77 || i == 301 || i == 420) throw std::runtime_error("item " + std::to_string(i));
+      });
+      ADD_FAILURE() << threads << " threads: nothing thrown";
+    } catch (const std::runtime_error& error) {
+      EXPECT_STREQ(error.what(), "item 77") << threads << " threads";
+    }
+    for (std::size_t i = 0; i <= 77; ++i) EXPECT_EQ(done[i], 1) << threads << " threads, " << i;
+    for (std::size_t i = 78; i < 500; ++i) EXPECT_LE(done[i], 1) << threads << " threads, " << i;
+  }
+}
+
+}  // namespace
+}  // namespace hullcook
