@@ -249,6 +249,20 @@ TEST(Issue17Fuzz, EdgeOfTwoUlpsAtANotchIsCutWithinContract) {
   expect_cut_within_contract(regions[0], "two ulps");
 }
 
+// The poly fuzzer again (14 minutes, in issue 17's session): an 18-gon of extent 19 with vertices
+// at (8.1e-300, 2) and (1e-101, 2), an edge 1e-101 long on the line of a cut from (-4, 2). One
+// piece's cut ran to one of them and its neighbour's to the other: collinear stretches that the
+// partition check failed to cut at the near end (its fraction along the stretch rounded to 1), so
+// `decompose` exited 4 on a partition that holds.
+TEST(Issue17Fuzz, CollinearCutsAcrossAnEdgeOf1e101PartitionTheOutline) {
+  const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) /
+                    "tests/core/data/issue17_fuzz_edge_of_1e-101.poly";
+  const std::vector<Region> regions = clean_and_validate(read_poly_file(path), "1e-101.poly");
+  ASSERT_EQ(regions.size(), 1u);
+  ASSERT_NO_THROW(refuse_sliver_regions(regions, "1e-101.poly"));  // valid input
+  expect_cut_within_contract(regions[0], "edge of 1e-101");
+}
+
 // The poly fuzzer (scripts/fuzz's fuzz_poly, 10 minutes): a 64-gon of radius 7 with two vertices
 // drawn out into spikes 6e7 and 8.3e8 long. The longer sets the rounding slack (0.83); the shorter
 // is 1.2 wide at its base, and under every measure at τ 0 and 1 % of R the piece holding its tip

@@ -20,6 +20,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 namespace hullcook {
 namespace {
@@ -546,19 +547,31 @@ std::vector<Stretch> cut_at_ends(const std::vector<Stretch>& stretches, double s
   std::vector<std::pair<double, Vec2>> cuts;
   for (const Stretch& stretch : stretches) {
     const Vec2 a = stretch.from, b = stretch.to, ab = b - a;
+    // Along the stretch's longer axis, coordinates order its points exactly. The fraction along
+    // it rounds: an end 1e-101 from b, on a stretch 4 long, came out at 1 and was not cut at
+    // (the fuzzer's polygon with an edge 1e-101 long, whose pieces' collinear cuts then did not
+    // match: exit 4 on a partition).
+    const bool by_x = std::abs(ab.x) >= std::abs(ab.y);
+    const double a_key = by_x ? a.x : a.y, b_key = by_x ? b.x : b.y;
+    const double sign = b_key >= a_key ? 1.0 : -1.0;
     cuts.clear();
     grid.for_each_cell(a, b, margin, [&](std::size_t cell) {
       for (const std::size_t* e = buckets.begin(cell); e != buckets.end(cell); ++e) {
         const Vec2 p = ends[*e];
+        const double key = by_x ? p.x : p.y;
+        const bool between = sign * (key - a_key) > 0.0 && sign * (b_key - key) > 0.0;
         const double along = glm::dot(p - a, ab) / glm::dot(ab, ab);
-        if (along > 0.0 && along < 1.0 && p != a && p != b &&
+        if ((between || (along > 0.0 && along < 1.0)) && p != a && p != b &&
             point_segment_distance(p, a, b) <= slack) {
-          cuts.emplace_back(along, p);
+          cuts.emplace_back(sign * key, p);
         }
       }
     });
-    std::sort(cuts.begin(), cuts.end(),
-              [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::sort(cuts.begin(), cuts.end(), [](const auto& x, const auto& y) {
+      return x.first != y.first
+                 ? x.first < y.first
+                 : std::tie(x.second.x, x.second.y) < std::tie(y.second.x, y.second.y);
+    });
     Vec2 from = a;
     for (const auto& [along, p] : cuts) {
       add_stretch(from, p, stretch.weight, stretch.ring, cut);
