@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 namespace hullcook {
 namespace {
@@ -232,6 +234,38 @@ TEST(EngineLimits, Issue17_ThreadsGiveTheSamePiecesInOrder) {
     for (std::size_t k = 0; k < one.size(); ++k) {
       EXPECT_EQ(many[k].hull, one[k].hull) << threads << " threads, piece " << k;
       EXPECT_EQ(many[k].component.outer, one[k].component.outer);
+    }
+  }
+}
+
+// An error while the hulls are fitted on several threads (the decomposer's, from the split): the
+// first piece's is the one thrown, as with one thread.
+TEST(EngineLimits, Issue17_ThreadsThrowTheFirstPiecesError) {
+  std::vector<CookedPiece> pieces;
+  for (int k = 0; k < 40; ++k) {
+    Ring star;
+    const Vec2 centre{200.0 * k, 0};
+    for (int i = 0; i < 60; ++i) {
+      const double angle = 2 * M_PI * i / 60;
+      star.push_back(centre +
+                     (50 + 15 * std::sin(5 * angle)) * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    pieces.push_back(convex_piece_of(star));
+  }
+  // Pieces 12 and 31 (by their centres) cannot be split.
+  const SplitComponent failing = [](const Region& component, double tau) {
+    double x = 0;
+    for (Vec2 p : component.outer) x += p.x / double(component.outer.size());
+    const int k = static_cast<int>(std::lround(x / 200));
+    if (k == 12 || k == 31) throw std::logic_error("no split of piece " + std::to_string(k));
+    return decompose_at(component, tau);
+  };
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    try {
+      apply_engine_limits(pieces, 0.5, EngineLimits{6, 0.005}, failing, "t", threads);
+      ADD_FAILURE() << threads << " threads: nothing thrown";
+    } catch (const std::logic_error& error) {
+      EXPECT_STREQ(error.what(), "no split of piece 12") << threads << " threads";
     }
   }
 }
