@@ -1,6 +1,6 @@
-// parallel_for (issue 17: one image's regions, rings and pieces split over the cook's threads):
-// every item done once, in its own slot, and the error thrown the first by index whatever the
-// thread count.
+// parallel_for and parallel_join (issue 17: one image's regions, rings and pieces split over the
+// cook's threads): every item done once, in its own slot, the results joined in index order, and
+// the error thrown the first by index whatever the thread count.
 #include "hullcook/core/parallel_for.h"
 
 #include <gtest/gtest.h>
@@ -45,6 +45,35 @@ TEST(ParallelFor, TheFirstErrorByIndexIsThrownAfterEveryItemBeforeIt) {
     }
     for (std::size_t i = 0; i <= 77; ++i) EXPECT_EQ(done[i], 1) << threads << " threads, " << i;
     for (std::size_t i = 78; i < 500; ++i) EXPECT_LE(done[i], 1) << threads << " threads, " << i;
+  }
+}
+
+// Items that make none, one or several results each: the joined vector is the serial loop's.
+TEST(ParallelJoin, ResultsInIndexOrderWhateverTheThreadCount) {
+  auto produce = [](std::size_t i, unsigned, std::vector<std::size_t>& out) {
+    for (std::size_t k = 0; k < i % 4; ++k) out.push_back(i * 10 + k);
+  };
+  for (std::size_t count : {0u, 1u, 15u, 16u, 17u, 999u}) {
+    std::vector<std::size_t> serial;
+    for (std::size_t i = 0; i < count; ++i) produce(i, 0, serial);
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+      EXPECT_EQ(parallel_join<std::size_t>(count, threads, produce), serial)
+          << threads << " threads, " << count << " items";
+    }
+  }
+}
+
+TEST(ParallelJoin, TheFirstErrorByIndexIsThrown) {
+  for (unsigned threads : {1u, 2u, 3u}) {
+    try {
+      parallel_join<int>(300, threads, [](std::size_t i, unsigned, std::vector<int>& out) {
+        if (i == 40 || i == 250) throw std::runtime_error("item " + std::to_string(i));
+        out.push_back(static_cast<int>(i));
+      });
+      ADD_FAILURE() << threads << " threads: nothing thrown";
+    } catch (const std::runtime_error& error) {
+      EXPECT_STREQ(error.what(), "item 40") << threads << " threads";
+    }
   }
 }
 

@@ -92,19 +92,10 @@ class Constrainer {
   // Places every piece, on up to threads threads: each piece's slots are its own (they depend
   // on it alone) and are joined in the pieces' order, whatever the thread count.
   void add_all(std::vector<CookedPiece> pieces, unsigned threads) {
-    if (threads <= 1 || pieces.size() < kPiecesWorthAThread) {
-      for (CookedPiece& piece : pieces) add(std::move(piece), 0, slots_);
-      return;
-    }
-    std::vector<std::vector<Slot>> placed(pieces.size());
-    parallel_for(pieces.size(), threads,
-                 [&](std::size_t k, unsigned) { add(std::move(pieces[k]), 0, placed[k]); });
-    std::size_t count = 0;
-    for (const std::vector<Slot>& slots : placed) count += slots.size();
-    slots_.reserve(count);
-    for (std::vector<Slot>& slots : placed) {
-      std::move(slots.begin(), slots.end(), std::back_inserter(slots_));
-    }
+    slots_ = parallel_join<Slot>(pieces.size(), threads,
+                                 [&](std::size_t k, unsigned, std::vector<Slot>& out) {
+                                   add(std::move(pieces[k]), 0, out);
+                                 });
   }
 
   // Places the pieces no hull of their own could hold: each is merged into a neighbour, or
@@ -138,9 +129,6 @@ class Constrainer {
     bool placed = false;
     bool merged = false;  // merged into another slot
   };
-
-  // Below this many pieces, fitting them costs less than starting a thread.
-  static constexpr std::size_t kPiecesWorthAThread = 16;
 
   // Appends to out the slots of piece: one, or those of its parts when it is split.
   void add(CookedPiece piece, int depth, std::vector<Slot>& out) const {

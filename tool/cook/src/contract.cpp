@@ -738,10 +738,6 @@ void check_piece(std::size_t k, const CookedPiece& piece, const ContractTerms& t
   }
 }
 
-// Below this many pieces or regions, checking them costs less than starting a thread.
-constexpr std::size_t kPiecesWorthAThread = 16;
-constexpr std::size_t kRegionsWorthAThread = 8;
-
 }  // namespace
 
 std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>& pieces,
@@ -768,26 +764,19 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   if (partition_problem) violations.push_back(*partition_problem);
   const bool partitioned = violations.empty();
 
-  // Each piece on its own (the work splits over threads), its reports in the pieces' order.
-  const unsigned workers = static_cast<unsigned>(
-      std::max<std::size_t>(1, std::min<std::size_t>(threads, pieces.size())));
-  if (workers == 1 || pieces.size() < kPiecesWorthAThread) {
-    PieceChecker checker(outline, limit);
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-      check_piece(k, pieces[k], terms, slack, tau, partitioned, checker, violations);
-    }
-    return violations;
-  }
-  // A checker per worker: the whole outline's distances keep scratch of their own, so each
-  // worker that needs them builds them (most pieces are proven by their own component).
+  // Each piece on its own (the work splits over threads), its reports in the pieces' order. A
+  // checker per worker: the whole outline's distances keep scratch of their own, so each worker
+  // that needs them builds them (most pieces are proven by their own component).
+  const unsigned workers = pieces.size() < kItemsWorthAThread
+                               ? 1u
+                               : static_cast<unsigned>(std::max<std::size_t>(
+                                     1, std::min<std::size_t>(threads, pieces.size())));
   std::vector<PieceChecker> checkers(workers, PieceChecker(outline, limit));
-  std::vector<std::vector<std::string>> reports(pieces.size());
-  parallel_for(pieces.size(), workers, [&](std::size_t k, unsigned worker) {
-    check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[worker], reports[k]);
-  });
-  for (std::vector<std::string>& piece_reports : reports) {
-    std::move(piece_reports.begin(), piece_reports.end(), std::back_inserter(violations));
-  }
+  std::vector<std::string> reports = parallel_join<std::string>(
+      pieces.size(), workers, [&](std::size_t k, unsigned worker, std::vector<std::string>& out) {
+        check_piece(k, pieces[k], terms, slack, tau, partitioned, checkers[worker], out);
+      });
+  std::move(reports.begin(), reports.end(), std::back_inserter(violations));
   return violations;
 }
 

@@ -253,22 +253,16 @@ class AssetDecomposer {
   // The pieces read off each tree (on the threads), in the trees' order.
   template <typename Read>
   std::vector<Piece> joined(const Read& read) const {
-    std::vector<std::vector<Piece>> parts(trees_.size());
-    parallel_for(
-        trees_.size(), threads_, [&](std::size_t r, unsigned) { parts[r] = read(r); },
-        kTreesWorthAThread);
-    std::size_t count = 0;
-    for (const std::vector<Piece>& part : parts) count += part.size();
-    std::vector<Piece> pieces;
-    pieces.reserve(count);
-    for (std::vector<Piece>& part : parts) {
-      std::move(part.begin(), part.end(), std::back_inserter(pieces));
-    }
-    return pieces;
+    return parallel_join<Piece>(
+        trees_.size(), threads_, [&](std::size_t r, unsigned, std::vector<Piece>& out) {
+          std::vector<Piece> pieces = read(r);
+          if (out.empty()) {
+            out = std::move(pieces);
+          } else {
+            std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
+          }
+        });
   }
-
-  // Below this many trees, reading them costs less than starting a thread.
-  static constexpr std::size_t kTreesWorthAThread = 16;
 
   DecomposeSettings settings_;
   unsigned threads_;

@@ -240,9 +240,6 @@ constexpr double kLargestCoordinate = 1e150;
 // and below about 1e-155 invalid, pieces than the same ring scaled up.
 constexpr double kSmallestSpan = 1e-140;
 
-// Below this many regions, validating them costs less than starting a thread.
-constexpr std::size_t kRegionsWorthAThread = 8;
-
 }  // namespace
 
 void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view source) {

@@ -70,12 +70,12 @@ class Simplifier {
   Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads)
       : rings_(rings), eps_(eps) {
     keep_.resize(rings.size());
-    const bool threaded = threads > 1 && rings.size() >= kRingsWorthAThread;
+    const bool threaded = threads > 1 && rings.size() >= kItemsWorthAThread;
     std::vector<Stack> stacks(threaded ? threads : 1);
     parallel_for(
         rings.size(), threads,
         [&](std::size_t r, unsigned worker) { start(static_cast<int>(r), stacks[worker]); },
-        kRingsWorthAThread);
+        kItemsWorthAThread);
   }
 
   // Refines until no two simplified edges cross or touch. Returns false if it gave up on some
@@ -123,9 +123,6 @@ class Simplifier {
   int interior_count(const Segment& s) const {
     return (s.to - s.from - 1 + size(s.ring)) % size(s.ring);
   }
-
-  // Below this many rings, simplifying them costs less than starting a thread.
-  static constexpr std::size_t kRingsWorthAThread = 16;
 
   using Stack = std::vector<std::pair<int, int>>;
 

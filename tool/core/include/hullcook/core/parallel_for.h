@@ -3,6 +3,8 @@
 
 #include <cstddef>
 #include <functional>
+#include <iterator>
+#include <vector>
 
 namespace hullcook {
 
@@ -15,5 +17,33 @@ namespace hullcook {
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t index, unsigned worker)>& work,
                   std::size_t min_count = 2);
+
+// Below this many items (pieces, rings, trees), doing them all on the caller costs less than
+// starting a thread; regions, each several pieces' work, are worth one from fewer.
+inline constexpr std::size_t kItemsWorthAThread = 16;
+inline constexpr std::size_t kRegionsWorthAThread = 8;
+
+// Runs produce(i, worker, out) for every i below count on up to `threads` threads, each i
+// appending what it makes to an `out` of its own, and returns the outs joined in index order:
+// the same vector whatever the thread count. On one thread, or below min_count items, every i
+// appends to the result itself. Errors as parallel_for's.
+template <typename T, typename Produce>
+std::vector<T> parallel_join(std::size_t count, unsigned threads, const Produce& produce,
+                             std::size_t min_count = kItemsWorthAThread) {
+  std::vector<T> joined;
+  if (threads <= 1 || count < min_count) {
+    for (std::size_t i = 0; i < count; ++i) produce(i, 0u, joined);
+    return joined;
+  }
+  std::vector<std::vector<T>> outs(count);
+  parallel_for(
+      count, threads, [&](std::size_t i, unsigned worker) { produce(i, worker, outs[i]); },
+      min_count);
+  std::size_t total = 0;
+  for (const std::vector<T>& out : outs) total += out.size();
+  joined.reserve(total);
+  for (std::vector<T>& out : outs) std::move(out.begin(), out.end(), std::back_inserter(joined));
+  return joined;
+}
 
 }  // namespace hullcook
