@@ -17,6 +17,12 @@
 namespace hullcook::trace_detail {
 namespace {
 
+// Below this many edges, nesting rings costs less than starting a thread; the rows and rings
+// handed out at a time.
+constexpr std::size_t kEdgesWorthAThread = 1 << 14;
+constexpr std::size_t kRowsPerRange = 64;
+constexpr std::size_t kRingsPerRange = 256;
+
 // Distances below this [px] count as touching. Traced rings are at least ~1/512 px apart (the
 // crossing points of different edges), so this only catches real contacts and rounding.
 constexpr double kTouch = 1e-9;
@@ -347,14 +353,16 @@ double signed_area(const Ring& ring) {
   return twice / 2;
 }
 
-std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
+std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads) {
   const int count = static_cast<int>(rings.size());
   std::vector<int> parents(count, -1);
   if (count == 0) return parents;
   double low_y = std::numeric_limits<double>::max(), high_y = std::numeric_limits<double>::lowest();
   std::vector<int> leftmost(count, 0);
+  std::size_t edge_count = 0;
   for (int r = 0; r < count; ++r) {
     const Ring& ring = rings[r];
+    edge_count += ring.size();
     for (std::size_t i = 0; i < ring.size(); ++i) {
       low_y = std::min(low_y, ring[i].y), high_y = std::max(high_y, ring[i].y);
       const Vec2& best = ring[leftmost[r]];
@@ -375,78 +383,102 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings) {
     return std::pair{static_cast<int>(std::min(a.y, b.y) - low_y),
                      static_cast<int>(std::max(a.y, b.y) - low_y)};
   };
+  // The buckets are built in bands of rows, one per worker: each walks every edge in order and
+  // writes only its own rows, so a bucket's order is the one-thread order.
+  const bool threaded = threads > 1 && edge_count >= kEdgesWorthAThread;
+  const int bands = threaded ? static_cast<int>(std::min<unsigned>(threads, rows)) : 1;
+  auto for_each_band = [&](auto&& work) {
+    parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, unsigned) {
+      const int band_low = static_cast<int>(band * rows / bands);
+      const int band_high = static_cast<int>((band + 1) * rows / bands);
+      for (int r = 0; r < count; ++r) {
+        for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
+          Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
+          auto [first, last] = row_range(a, b);
+          first = std::max(first, band_low), last = std::min(last, band_high - 1);
+          for (int row = first; row <= last; ++row) work(row, a, b, r, i);
+        }
+      }
+    });
+  };
   std::vector<int> starts(static_cast<std::size_t>(rows) + 1, 0);
-  for (int r = 0; r < count; ++r) {
-    for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
-      auto [first, last] = row_range(rings[r][i], rings[r][(i + 1) % n]);
-      for (int row = first; row <= last; ++row) ++starts[row + 1];
-    }
-  }
+  for_each_band([&](int row, Vec2, Vec2, int, std::size_t) { ++starts[row + 1]; });
   for (int row = 0; row < rows; ++row) starts[row + 1] += starts[row];
   std::vector<BucketEdge> edges(static_cast<std::size_t>(starts.back()));
   std::vector<int> fill(starts.begin(), starts.end() - 1);
   std::vector<double> widest(rows, 0.0);  // the largest x extent of an edge in each bucket
-  for (int r = 0; r < count; ++r) {
-    for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
-      Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
-      auto [first, last] = row_range(a, b);
-      for (int row = first; row <= last; ++row) {
-        edges[fill[row]++] = {std::min(a.x, b.x), r, static_cast<int>(i)};
-        widest[row] = std::max(widest[row], std::abs(b.x - a.x));
-      }
-    }
-  }
+  for_each_band([&](int row, Vec2 a, Vec2 b, int r, std::size_t i) {
+    edges[fill[row]++] = {std::min(a.x, b.x), r, static_cast<int>(i)};
+    widest[row] = std::max(widest[row], std::abs(b.x - a.x));
+  });
   // A row's edges are sorted (for the walk below) only when the row has many queries: with a
   // few, one scan of its edges is cheaper.
   constexpr int kScanQueries = 8;
   auto row_of = [&](int r) { return static_cast<int>(rings[r][leftmost[r]].y - low_y); };
   std::vector<int> queries(rows, 0);
   for (int r = 0; r < count; ++r) ++queries[row_of(r)];
-  for (int row = 0; row < rows; ++row) {
-    if (queries[row] <= kScanQueries) continue;
-    std::sort(edges.begin() + starts[row], edges.begin() + starts[row + 1],
-              // Edges of equal min_x may come in any order: rings do not touch, so no two
-              // rings cross a row at the same x, and the walk below stops only past every
-              // edge that could still be hit.
-              [](const BucketEdge& e, const BucketEdge& f) { return e.min_x < f.min_x; });
-  }
+  parallel_for_ranges(
+      static_cast<std::size_t>(rows), bands, kRowsPerRange,
+      [&](std::size_t first, std::size_t end, unsigned) {
+        for (std::size_t row = first; row < end; ++row) {
+          if (queries[row] <= kScanQueries) continue;
+          // Edges of equal min_x may come in any order: rings do not touch, so
+          // no two rings cross a row at the same x, and the walk below stops
+          // only past every edge that could still be hit.
+          std::sort(edges.begin() + starts[row], edges.begin() + starts[row + 1],
+                    [](const BucketEdge& e, const BucketEdge& f) { return e.min_x < f.min_x; });
+        }
+      });
   std::vector<char> outer(count);
   for (int r = 0; r < count; ++r) outer[r] = signed_area(rings[r]) > 0;
+  // The first ring a leftward ray from a ring's leftmost vertex meets bounds the face the ring
+  // lies in: it is the parent if its orientation differs (it encloses that face), else a sibling.
+  std::vector<int> hits(count, -1);
+  parallel_for_ranges(
+      static_cast<std::size_t>(count), bands, kRingsPerRange,
+      [&](std::size_t first, std::size_t end, unsigned) {
+        for (std::size_t ring = first; ring < end; ++ring) {
+          const int r = static_cast<int>(ring);
+          Vec2 p = rings[r][leftmost[r]];
+          int hit = -1;
+          double hit_x = std::numeric_limits<double>::lowest();
+          const int row = row_of(r);
+          const auto bucket_begin = edges.begin() + starts[row],
+                     bucket_end = edges.begin() + starts[row + 1];
+          auto consider = [&](const BucketEdge& e) {
+            if (e.ring == r || !(e.min_x < p.x)) return;
+            const Ring& ring = rings[e.ring];
+            Vec2 a = ring[e.index], b = ring[(e.index + 1) % ring.size()];
+            if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) return;
+            double x =
+                a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
+            if (x < p.x && x > hit_x) hit_x = x, hit = e.ring;
+          };
+          if (queries[row] <= kScanQueries) {
+            for (auto e = bucket_begin; e != bucket_end; ++e) consider(*e);
+          } else {
+            auto end = std::lower_bound(bucket_begin, bucket_end, p.x,
+                                        [](const BucketEdge& e, double x) { return e.min_x < x; });
+            // Walking leftwards: an edge starting at min_x crosses at most at min_x + widest.
+            for (auto e = end; e != bucket_begin;) {
+              --e;
+              if (e->min_x + widest[row] <= hit_x) break;
+              consider(*e);
+            }
+          }
+          hits[r] = hit;
+        }
+      });
+  // A sibling's parent is known first: the ring hit lies to the left, so it comes first in the
+  // order of leftmost vertices.
   std::vector<int> order(count);
   for (int r = 0; r < count; ++r) order[r] = r;
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     Vec2 pa = rings[a][leftmost[a]], pb = rings[b][leftmost[b]];
     return pa.x != pb.x ? pa.x < pb.x : (pa.y != pb.y ? pa.y < pb.y : a < b);
   });
-  // The first ring a leftward ray from a ring's leftmost vertex meets bounds the face the ring
-  // lies in: it is the parent if its orientation differs (it encloses that face), else a sibling.
   for (int r : order) {
-    Vec2 p = rings[r][leftmost[r]];
-    int hit = -1;
-    double hit_x = std::numeric_limits<double>::lowest();
-    const int row = row_of(r);
-    const auto bucket_begin = edges.begin() + starts[row],
-               bucket_end = edges.begin() + starts[row + 1];
-    auto consider = [&](const BucketEdge& e) {
-      if (e.ring == r || !(e.min_x < p.x)) return;
-      const Ring& ring = rings[e.ring];
-      Vec2 a = ring[e.index], b = ring[(e.index + 1) % ring.size()];
-      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) return;
-      double x = a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
-      if (x < p.x && x > hit_x) hit_x = x, hit = e.ring;
-    };
-    if (queries[row] <= kScanQueries) {
-      for (auto e = bucket_begin; e != bucket_end; ++e) consider(*e);
-    } else {
-      auto end = std::lower_bound(bucket_begin, bucket_end, p.x,
-                                  [](const BucketEdge& e, double x) { return e.min_x < x; });
-      // Walking leftwards: an edge starting at min_x crosses at most at min_x + widest.
-      for (auto e = end; e != bucket_begin;) {
-        --e;
-        if (e->min_x + widest[row] <= hit_x) break;
-        consider(*e);
-      }
-    }
+    const int hit = hits[r];
     if (hit < 0) continue;
     parents[r] = outer[r] != outer[hit] ? hit : parents[hit];
   }
@@ -470,7 +502,7 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
       }
     }
     if (!restored) {
-      std::vector<int> now = nesting_parents(result);
+      std::vector<int> now = nesting_parents(result, threads);
       for (std::size_t r = 0; r < rings.size(); ++r) {
         if (now[r] == parents[r]) continue;
         simplifier.restore(static_cast<int>(r));

@@ -177,7 +177,7 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
     result.trace_ms = milliseconds_since(start);
     return result;
   }
-  std::vector<int> parents = nesting_parents(rings);
+  std::vector<int> parents = nesting_parents(rings, settings.threads);
 
   // Specks and pin holes go with everything inside them (a blob inside a filled hole is solid).
   const int count = static_cast<int>(rings.size());

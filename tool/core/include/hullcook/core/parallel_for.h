@@ -1,6 +1,7 @@
 // Work split over a few threads with results that never depend on how many.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <iterator>
@@ -17,6 +18,17 @@ namespace hullcook {
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t index, unsigned worker)>& work,
                   std::size_t min_count = 2);
+
+// parallel_for over the ranges [begin, end) of at most `chunk` items each, for items so small
+// (a ring's nesting query) that handing them out one by one would cost more than they do.
+inline void parallel_for_ranges(
+    std::size_t count, unsigned threads, std::size_t chunk,
+    const std::function<void(std::size_t begin, std::size_t end, unsigned worker)>& work) {
+  const std::size_t ranges = (count + chunk - 1) / chunk;
+  parallel_for(ranges, threads, [&](std::size_t r, unsigned worker) {
+    work(r * chunk, std::min(count, (r + 1) * chunk), worker);
+  });
+}
 
 // Below this many items (pieces, rings, trees), doing them all on the caller costs less than
 // starting a thread; regions, each several pieces' work, are worth one from fewer.
