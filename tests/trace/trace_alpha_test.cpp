@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <initializer_list>
 
@@ -176,6 +178,40 @@ TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
     for (std::size_t r = 0; r < one.regions.size(); ++r) {
       EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
       EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
+    }
+  }
+}
+
+// In every cell a plank lies in a block's shallow notch, two pixels from its floor: simplified
+// coarsely, the block's chord over the notch cuts through the plank until the untangling refines
+// it, on several threads when asked (issue 17). Enough segments (over 16,384) that it takes
+// them; the same regions whatever the count.
+TEST(TraceAlpha, Issue17_ThreadsUntangleTheSameWay) {
+  constexpr int kSide = 1200, kCell = 24;
+  AlphaImage image{kSide, kSide, std::vector<std::uint8_t>(kSide * kSide, 0)};
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      const int cx = x % kCell, cy = y % kCell;
+      const bool block =
+          cx >= 2 && cx <= 21 && cy >= 2 && cy <= 21 && !(cy <= 4 && cx >= 6 && cx <= 17);
+      const bool plank = cy == 2 && cx >= 8 && cx <= 15;
+      image.alpha[y * kSide + x] = block || plank ? 255 : 0;
+    }
+  }
+  TraceSettings settings;
+  settings.simplify = 3.5;
+  const TraceResult one = trace_alpha(image, settings);
+  ASSERT_EQ(one.regions.size(), 5000u);
+  // Every block's chord over its notch was refined (a fifth vertex, at least), the planks not.
+  const auto refined = std::count_if(one.regions.begin(), one.regions.end(),
+                                     [](const Region& region) { return region.outer.size() > 4; });
+  EXPECT_EQ(refined, 2500);
+  for (unsigned threads : {2u, 3u}) {
+    settings.threads = threads;
+    const TraceResult many = trace_alpha(image, settings);
+    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
+    for (std::size_t r = 0; r < one.regions.size(); ++r) {
+      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
     }
   }
 }

@@ -17,11 +17,12 @@
 namespace hullcook::trace_detail {
 namespace {
 
-// Below this many edges, nesting rings costs less than starting a thread; the rows and rings
-// handed out at a time.
+// Below this many edges, nesting or untangling rings costs less than starting a thread; the
+// rows, rings and cells handed out at a time.
 constexpr std::size_t kEdgesWorthAThread = 1 << 14;
 constexpr std::size_t kRowsPerRange = 64;
 constexpr std::size_t kRingsPerRange = 256;
+constexpr std::size_t kCellsPerRange = 4096;
 
 // Distances below this [px] count as touching. Traced rings are at least ~1/512 px apart (the
 // crossing points of different edges), so this only catches real contacts and rounding.
@@ -74,7 +75,7 @@ class Simplifier {
   // Each ring is first simplified on its own, on up to threads threads (the rings' results do
   // not depend on each other).
   Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads)
-      : rings_(rings), eps_(eps) {
+      : rings_(rings), eps_(eps), threads_(threads) {
     keep_.resize(rings.size());
     const bool threaded = threads > 1 && rings.size() >= kItemsWorthAThread;
     std::vector<Stack> stacks(threaded ? threads : 1);
@@ -260,7 +261,8 @@ class Simplifier {
       return std::clamp(static_cast<int>((y - low.y) / cell), 0, rows - 1);
     };
     const double margin = 1e-6;
-    auto for_each_cell = [&](const Segment& segment, auto&& visit) {
+    // Visits the cells of rows [band_low, band_high) that the segment's path crosses.
+    auto for_each_cell = [&](const Segment& segment, int band_low, int band_high, auto&& visit) {
       Vec2 a = rings_[segment.ring][segment.from];
       Vec2 b = rings_[segment.ring][segment.to];
       if (a.x > b.x) std::swap(a, b);
@@ -274,38 +276,58 @@ class Simplifier {
           y1 = a.y + (b.y - a.y) * (std::clamp(x1, a.x, b.x) - a.x) / (b.x - a.x);
         }
         if (y0 > y1) std::swap(y0, y1);
-        for (int row = clamp_row(y0 - margin); row <= clamp_row(y1 + margin); ++row) {
+        for (int row = std::max(band_low, clamp_row(y0 - margin)),
+                 last = std::min(band_high - 1, clamp_row(y1 + margin));
+             row <= last; ++row) {
           visit(static_cast<std::size_t>(row) * columns + column);
         }
       }
     };
+    // The grid is built in bands of rows, one per worker: each walks every segment in order and
+    // writes only its own rows, so a cell's order is the one-thread order.
+    const bool threaded = threads_ > 1 && segments.size() >= kEdgesWorthAThread;
+    const int bands = threaded ? static_cast<int>(std::min<unsigned>(threads_, rows)) : 1;
+    auto for_each_band = [&](auto&& enter) {
+      parallel_for(static_cast<std::size_t>(bands), threads_, [&](std::size_t band, unsigned) {
+        const int band_low = static_cast<int>(band * rows / bands);
+        const int band_high = static_cast<int>((band + 1) * rows / bands);
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+          for_each_cell(segments[s], band_low, band_high, [&](std::size_t c) { enter(c, s); });
+        }
+      });
+    };
     std::vector<int>& starts = grid_starts_;
     std::vector<int>& entries = grid_entries_;
     starts.assign(static_cast<std::size_t>(columns) * rows + 1, 0);
-    for (const Segment& segment : segments) {
-      for_each_cell(segment, [&](std::size_t c) { ++starts[c + 1]; });
-    }
+    for_each_band([&](std::size_t c, std::size_t) { ++starts[c + 1]; });
     for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
     entries.resize(static_cast<std::size_t>(starts.back()));
     std::vector<int>& fill = grid_fill_;
     fill.assign(starts.begin(), starts.end() - 1);
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      for_each_cell(segments[s], [&](std::size_t c) { entries[fill[c]++] = static_cast<int>(s); });
-    }
-    for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
-      for (int i = starts[c]; i < starts[c + 1]; ++i) {
-        for (int j = i + 1; j < starts[c + 1]; ++j) {
-          if (touch(segments[entries[i]], segments[entries[j]])) {
-            result.emplace_back(entries[i], entries[j]);
+    for_each_band([&](std::size_t c, std::size_t s) { entries[fill[c]++] = static_cast<int>(s); });
+    // The pairs of each range of cells, joined in the cells' order.
+    const std::size_t cells = starts.size() - 1;
+    return parallel_join<std::pair<int, int>>(
+        (cells + kCellsPerRange - 1) / kCellsPerRange, static_cast<unsigned>(bands),
+        [&](std::size_t range, unsigned, std::vector<std::pair<int, int>>& out) {
+          for (std::size_t c = range * kCellsPerRange,
+                           end = std::min(cells, (range + 1) * kCellsPerRange);
+               c < end; ++c) {
+            for (int i = starts[c]; i < starts[c + 1]; ++i) {
+              for (int j = i + 1; j < starts[c + 1]; ++j) {
+                if (touch(segments[entries[i]], segments[entries[j]])) {
+                  out.emplace_back(entries[i], entries[j]);
+                }
+              }
+            }
           }
-        }
-      }
-    }
-    return result;
+        },
+        2);
   }
 
   const std::vector<Ring>& rings_;
   double eps_;
+  unsigned threads_;
   std::vector<std::vector<char>> keep_;
   std::vector<std::pair<int, int>> peucker_stack_;  // douglas_peucker's, reused
   // The grid of touching_pairs(), kept between rounds so that it is allocated once.
