@@ -2,6 +2,7 @@
 #include "hullcook/trace/trace.h"
 
 #include "hullcook/core/error.h"
+#include "hullcook/core/parallel_for.h"
 #include "rings.h"
 
 #include <algorithm>
@@ -10,6 +11,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace hullcook {
 namespace {
@@ -18,23 +22,28 @@ using trace_detail::nesting_parents;
 using trace_detail::signed_area;
 using trace_detail::simplify_rings;
 
+// Below this many pixels, marching costs less than starting a thread.
+constexpr std::size_t kPixelsWorthAThread = 1 << 18;
+
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
 
-// Closed rings of the threshold crossing, oriented with the opaque side on the left (positive
-// shoelace area for outer rings in y-down pixel coordinates), opaque 8-connected.
-//
-// Cells have their corners at pixel centres. The cell whose top-left corner is pixel (x, y) has
-// corners c0 = (x, y), c1 = (x+1, y), c2 = (x+1, y+1), c3 = (x, y+1), in the positive order, and
-// edges e_k from c_k to c_{k+1}. Walking the corners in that order, each edge leaving the opaque
-// side is joined to the next edge entering it; in a saddle cell that joins the two opaque
-// corners, which is the 8-connected rule.
-//
-// Cost: a pass over the pixels that skips eight uniform cells at a time (comparing words of the
-// two rows' opaque flags), and the real work only in the cells the outline crosses.
-std::vector<Ring> march(const AlphaImage& image, int threshold) {
+// One band of cell rows' crossing points, numbered from 0 in the order the whole march would
+// make them. The points on the band's top pixel row belong to the band above (its last row made
+// them): they are referred to as -(x + 2), by the left pixel's x.
+constexpr int kUnlinked = std::numeric_limits<int>::max();  // a point whose next is not known yet
+
+struct MarchedBand {
+  std::vector<Vec2> points;
+  std::vector<int> next;  // per point: the next point of its ring (a band's own or one above)
+  std::vector<std::pair<int, int>> next_of_above;  // (a point above, the next point)
+  std::vector<int> bottom;  // the points on the pixel row below the band, by x + 1
+};
+
+// Marches cell rows [first_row, end_row) (cell row y has pixel rows y and y + 1 at its corners).
+MarchedBand march_band(const AlphaImage& image, int threshold, int first_row, int end_row) {
   const int width = image.width, height = image.height;
   // The padding is transparent even at threshold 0, where every real pixel is opaque.
   const int padding = threshold == 0 ? -1 : 0;
@@ -72,20 +81,25 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     return w;
   };
 
-  std::vector<Vec2> points;
-  std::vector<int> next;
+  MarchedBand band;
+  std::vector<Vec2>& points = band.points;
+  std::vector<int>& next = band.next;
   // Point ids on the horizontal edges of pixel rows y and y+1 (indexed by the left pixel's x+1)
   // and on the vertical edges of the current cell row (indexed by the pixel's x+1). An id is
   // current only if made since the row that owns the array began (ids only grow), so the
-  // arrays are never cleared.
+  // arrays are never cleared. The band's top row's points are the band above's: all current.
   std::vector<int> top(width + 2, -1), bottom(width + 2, -1), vertical(width + 3, -1);
   int top_first = 0, row_first = 0;  // the first ids made in cell rows y-1 and y
+  if (first_row > -1) {
+    for (int i = 0; i < width + 2; ++i) top[i] = -(i + 1);
+    top_first = std::numeric_limits<int>::min();
+  }
   auto crossing = [&](int x0, int y0, int x1, int y1) {
     double v0 = value(x0, y0), v1 = value(x1, y1);
     double t = (level - v0) / (v1 - v0);
     Vec2 a{x0 + 0.5, y0 + 0.5}, b{x1 + 0.5, y1 + 0.5};
     points.push_back(a + t * (b - a));
-    next.push_back(-1);
+    next.push_back(kUnlinked);
     return static_cast<int>(points.size()) - 1;
   };
 
@@ -107,15 +121,22 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
       for (int step = 1; step < 4; ++step) {
         int e = (k + step) % 4;
         if (!opaque[e] && opaque[(e + 1) % 4]) {  // e enters the opaque side
-          next[point_on(k)] = point_on(e);
+          // The entering edge's point is made first (the order the points are numbered in).
+          const int to = point_on(e);
+          const int from = point_on(k);
+          if (from >= 0) {
+            next[from] = to;
+          } else {
+            band.next_of_above.emplace_back(from, to);
+          }
           break;
         }
       }
     }
   };
 
-  bool upper_any = load_flags(-1, upper);
-  for (int y = -1; y < height; ++y) {
+  bool upper_any = load_flags(first_row, upper);
+  for (int y = first_row; y < end_row; ++y) {
     const bool lower_any = load_flags(y + 1, lower);
     row_first = static_cast<int>(points.size());
     // Cells x = -1 .. width-1 are i = x+1 = 0 .. width; eight at a time while uniform, and none
@@ -136,6 +157,59 @@ std::vector<Ring> march(const AlphaImage& image, int threshold) {
     std::swap(upper, lower);
     upper_any = lower_any;
     top_first = row_first;
+  }
+  band.bottom = std::move(top);  // swapped in after the last row
+  return band;
+}
+
+// Closed rings of the threshold crossing, oriented with the opaque side on the left (positive
+// shoelace area for outer rings in y-down pixel coordinates), opaque 8-connected.
+//
+// Cells have their corners at pixel centres. The cell whose top-left corner is pixel (x, y) has
+// corners c0 = (x, y), c1 = (x+1, y), c2 = (x+1, y+1), c3 = (x, y+1), in the positive order, and
+// edges e_k from c_k to c_{k+1}. Walking the corners in that order, each edge leaving the opaque
+// side is joined to the next edge entering it; in a saddle cell that joins the two opaque
+// corners, which is the 8-connected rule.
+//
+// Cost: a pass over the pixels that skips eight uniform cells at a time (comparing words of the
+// two rows' opaque flags), and the real work only in the cells the outline crosses. A large
+// image is marched in bands of rows on up to `threads` threads, whose points are then numbered
+// on as one march would number them: the rings are the same whatever the count.
+std::vector<Ring> march(const AlphaImage& image, int threshold, unsigned threads) {
+  const int rows = image.height + 1;  // cell rows -1 .. height-1
+  const bool threaded =
+      threads > 1 && static_cast<std::size_t>(image.width) * image.height >= kPixelsWorthAThread;
+  const int band_count = threaded ? static_cast<int>(std::min<unsigned>(threads, rows)) : 1;
+  std::vector<MarchedBand> bands(band_count);
+  parallel_for(static_cast<std::size_t>(band_count), threads, [&](std::size_t b, unsigned) {
+    const int first = -1 + static_cast<int>(b * rows / band_count);
+    const int end = -1 + static_cast<int>((b + 1) * rows / band_count);
+    bands[b] = march_band(image, threshold, first, end);
+  });
+
+  std::vector<Vec2> points;
+  std::vector<int> next;
+  if (band_count == 1) {
+    points = std::move(bands[0].points);
+    next = std::move(bands[0].next);
+  } else {
+    std::vector<int> offsets(band_count, 0);
+    for (int b = 1; b < band_count; ++b) {
+      offsets[b] = offsets[b - 1] + static_cast<int>(bands[b - 1].points.size());
+    }
+    const std::size_t total = static_cast<std::size_t>(offsets.back()) + bands.back().points.size();
+    points.reserve(total);
+    next.reserve(total);
+    for (int b = 0; b < band_count; ++b) {
+      // A point above is one of the band above's bottom row.
+      auto global = [&](int id) {
+        return id >= 0 ? offsets[b] + id : offsets[b - 1] + bands[b - 1].bottom[-id - 1];
+      };
+      points.insert(points.end(), bands[b].points.begin(), bands[b].points.end());
+      // A band's last points are linked by the band below (next_of_above).
+      for (int id : bands[b].next) next.push_back(id == kUnlinked ? kUnlinked : global(id));
+      for (auto [from, to] : bands[b].next_of_above) next[global(from)] = global(to);
+    }
   }
 
   std::vector<Ring> rings;
@@ -170,7 +244,7 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
   result.height = image.height;
   const int threshold = std::clamp(settings.alpha, 0, 255);
 
-  std::vector<Ring> rings = march(image, threshold);
+  std::vector<Ring> rings = march(image, threshold, settings.threads);
   if (rings.empty()) {
     result.warnings.push_back("fully transparent (no pixel with alpha >= " +
                               std::to_string(threshold) + "): no region traced");
