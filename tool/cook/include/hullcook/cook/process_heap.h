@@ -13,8 +13,9 @@ void keep_freed_memory();
 // 10,000-vertex outline: several times the decomposition itself where faults are slow, as in a
 // virtual machine); on huge pages a fresh heap faults once per 2 MiB. Resident memory then grows
 // by whole huge pages, so a process that watches it in small steps (the cook's repeated runs)
-// keeps to keep_freed_memory. Once per process, before the work; a no-op where the C library or
-// the kernel lacks it.
+// keeps to keep_freed_memory, and so does a cook, whose tens of MB of huge pages cost more in
+// first faults than they save where the kernel compacts memory for each (cmd_cook.cpp). Once per
+// process, before the work; a no-op where the C library or the kernel lacks it.
 void prepare_process_heap();
 
 }  // namespace hullcook
