@@ -220,8 +220,11 @@ class AssetDecomposer {
 
   // The same, for the last level read: the pieces' components are moved out of the trees.
   std::vector<Piece> take_pieces_at(double tau) {
-    std::vector<Piece> pieces =
-        joined([&](std::size_t r) { return std::move(trees_[r]).pieces_at(tau); });
+    // Each tree is freed on the thread that read it, not all of them on the caller after.
+    std::vector<Piece> pieces = joined([&](std::size_t r) {
+      DecompositionTree tree = std::move(trees_[r]);
+      return std::move(tree).pieces_at(tau);
+    });
     trees_.clear();
     return pieces;
   }
