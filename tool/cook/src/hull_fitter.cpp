@@ -461,12 +461,19 @@ bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
       Vec2 apex = a + first * t;
       bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t) &&
                    (!limits_.keep_inside || limits_.keep_inside->holds(apex));
-      double at_apex =
-          ahead && !clearly_beyond(hull, i, j, apex) ? reach_.distance(apex, bound_) : bound_ + 1;
-      // Distance is 1-Lipschitz: a segment whose ends' distances and half its length stay within
-      // bound needs no closer look.
+      std::optional<OutlineDistance::EdgeSpan> nearest;
+      OutlineDistance::EdgeSpan found{};
+      double at_apex = bound_ + 1;
+      if (ahead && !clearly_beyond(hull, i, j, apex)) {
+        at_apex = reach_.distance(apex, bound_, &found);
+        if (at_apex > 0 && at_apex <= bound_) nearest = found;
+      }
+      // A segment needs no closer look when distance, 1-Lipschitz, cannot exceed bound between
+      // its ends, or when both ends lie within bound of the edge nearest the apex (the distance
+      // to one edge is convex along the segment).
       auto within = [&](Vec2 corner, double at_corner) {
         return (at_corner + at_apex + glm::length(apex - corner)) / 2 <= bound_ ||
+               (nearest && point_segment_distance(corner, nearest->a, nearest->b) <= bound_) ||
                reach_.segment_within(corner, apex, bound_);
       };
       if (at_apex <= bound_ && within(b, corner_reach_[(i + 1) % m]) &&

@@ -309,7 +309,7 @@ bool OutlineDistance::contains(Vec2 p) const {
   return inside;
 }
 
-double OutlineDistance::distance(Vec2 p, double limit) const {
+double OutlineDistance::distance(Vec2 p, double limit, EdgeSpan* nearest) const {
   ++distance_queries_;
   if (edges_.empty()) return kInfinity;
   if (contains(p)) return 0.0;
@@ -321,13 +321,15 @@ double OutlineDistance::distance(Vec2 p, double limit) const {
   int column = column_of(p.x), row = row_of(p.y);
   int rings = std::max(columns_, rows_);
   double best = kInfinity, best_squared = kInfinity;
+  const Edge* best_edge = nullptr;
   for (int k = 0; k <= rings; ++k) {
     auto scan = [&](int c, int r) {
       if (c < 0 || r < 0 || c >= columns_ || r >= rows_) return;
       std::size_t cell = static_cast<std::size_t>(r) * columns_ + c;
       for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
         const Edge& e = edges_[cell_edges_[i]];
-        best_squared = std::min(best_squared, point_segment_distance_squared(p, e.a, e.b));
+        const double squared = point_segment_distance_squared(p, e.a, e.b);
+        if (squared < best_squared) best_squared = squared, best_edge = &e;
       }
     };
     if (k == 0) {
@@ -346,6 +348,7 @@ double OutlineDistance::distance(Vec2 p, double limit) const {
     double unseen = std::max(outside, k * cell_);
     if (best <= unseen || unseen > limit) break;
   }
+  if (nearest && best_edge && best <= limit) *nearest = *best_edge;
   return best;
 }
 

@@ -22,8 +22,12 @@ class OutlineDistance {
   bool contains(Vec2 p) const;
 
   // Distance from p to the outline: 0 inside. Beyond limit, some value above limit (the search
-  // stops there).
-  double distance(Vec2 p, double limit) const;
+  // stops there). nearest, when given and p is outside within limit: the boundary edge at that
+  // distance (else left as it is).
+  struct EdgeSpan {
+    Vec2 a, b;
+  };
+  double distance(Vec2 p, double limit, EdgeSpan* nearest = nullptr) const;
   // How many distance() calls this object has answered (what the fitters' shortcuts save).
   std::uint64_t distance_queries() const { return distance_queries_; }
 
@@ -44,9 +48,7 @@ class OutlineDistance {
   bool growth_within(const Ring& grown, const Ring& known, double tau) const;
 
  private:
-  struct Edge {
-    Vec2 a, b;
-  };
+  using Edge = EdgeSpan;
 
   int column_of(double x) const;
   int row_of(double y) const;
