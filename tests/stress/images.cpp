@@ -283,12 +283,58 @@ DrawnImage one_pixel_walls(Random& random, std::uint64_t seed) {
   return std::move(canvas).image(ImageFamily::one_pixel_walls, seed, description.str());
 }
 
+// Sprites of the small families, a few pixels apart, in rows until the image is at least
+// kSide px each way.
+DrawnImage mosaic(Random& random, std::uint64_t seed) {
+  constexpr int kSide = 640, kGap = 3;
+  constexpr ImageFamily kParts[] = {ImageFamily::tileset, ImageFamily::frame, ImageFamily::button,
+                                    ImageFamily::one_pixel_walls};
+  struct Placed {
+    DrawnImage image;
+    int x, y;
+  };
+  std::vector<Placed> placed;
+  int x = 0, y = 0, row_height = 0, width = 0;
+  while (y < kSide) {
+    const ImageFamily family = kParts[random.integer(0, 3)];
+    DrawnImage part = draw_image(family, mix_seed(seed, placed.size()));
+    if (x > 0 && x + part.width > kSide + 200) x = 0, y += row_height + kGap, row_height = 0;
+    if (x == 0 && y >= kSide) break;
+    row_height = std::max(row_height, part.height);
+    width = std::max(width, x + part.width);
+    placed.push_back({std::move(part), x, y});
+    x += placed.back().image.width + kGap;
+    if (x >= kSide) x = 0, y += row_height + kGap, row_height = 0;
+  }
+  int height = 0;
+  for (const Placed& p : placed) height = std::max(height, p.y + p.image.height);
+  Canvas canvas(width, height);
+  for (const Placed& p : placed) {
+    for (int py = 0; py < p.image.height; ++py) {
+      for (int px = 0; px < p.image.width; ++px) {
+        canvas.set(p.x + px, p.y + py, p.image.alpha[py * p.image.width + px]);
+      }
+    }
+  }
+  std::ostringstream description;
+  description << placed.size() << " sprites of the other families, " << width << "x" << height
+              << " px";
+  return std::move(canvas).image(ImageFamily::mosaic, seed, description.str());
+}
+
 }  // namespace
 
+std::size_t images_to_draw(ImageFamily family, std::size_t wanted) {
+  if (wanted == 0) return 0;
+  if (family == ImageFamily::grid_sheet) return 1;
+  if (family == ImageFamily::mosaic) return std::max<std::size_t>(1, wanted / 10);
+  return wanted;
+}
+
 const std::vector<ImageFamily>& all_image_families() {
-  static const std::vector<ImageFamily> families{ImageFamily::tileset, ImageFamily::frame,
-                                                 ImageFamily::button, ImageFamily::one_pixel_walls,
-                                                 ImageFamily::grid_sheet};
+  static const std::vector<ImageFamily> families{
+      ImageFamily::tileset,         ImageFamily::frame,      ImageFamily::button,
+      ImageFamily::one_pixel_walls, ImageFamily::grid_sheet, ImageFamily::mosaic};
   return families;
 }
 
@@ -304,6 +350,8 @@ const char* image_family_name(ImageFamily family) {
       return "one_pixel_walls";
     case ImageFamily::grid_sheet:
       return "grid_sheet";
+    case ImageFamily::mosaic:
+      return "mosaic";
   }
   return "?";
 }
@@ -328,6 +376,8 @@ DrawnImage draw_image(ImageFamily family, std::uint64_t seed) {
       return one_pixel_walls(random, seed);
     case ImageFamily::grid_sheet:
       return grid_sheet(seed);
+    case ImageFamily::mosaic:
+      return mosaic(random, seed);
   }
   return grid_sheet(seed);
 }

@@ -3,6 +3,7 @@
 // of 400 cells), each drawn from one 64-bit seed with hard 0/255 alpha edges.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,7 +18,13 @@ enum class ImageFamily {
   button,           // rounded buttons with 1-3 holes nearly filling them, some notched
   one_pixel_walls,  // mazes, diamond lattices and combs of 1 px walls
   grid_sheet,       // 1000x1000 px, 20x20 cells of 48 px behind 2 px lines: 400 holes
+  mosaic,           // the other families' sprites side by side, 640 px a side or more: one
+                    // image large enough that its tracing takes the cook's threads (issue 17)
 };
+
+// How many of a family's images a run of `wanted` per family draws: one grid sheet (every seed
+// draws the same), a tenth as many mosaics (each holds some thirty sprites), else all.
+std::size_t images_to_draw(ImageFamily family, std::size_t wanted);
 
 const std::vector<ImageFamily>& all_image_families();
 const char* image_family_name(ImageFamily family);

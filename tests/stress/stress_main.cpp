@@ -43,7 +43,7 @@ struct Options {
       "%s\nusage: hullcook_stress [--cases N] [--images N] [--seed S] [--family F]... "
       "[--measure M]... [--tau T]... [--out DIR] [--show N] [--progress] [--input FILE]...\n"
       "families: thin_wall grid row ring star button (polygons), tileset frame "
-      "ui_button one_pixel_walls grid_sheet (images)\n",
+      "ui_button one_pixel_walls grid_sheet mosaic (images)\n",
       problem.c_str());
   std::exit(1);
 }
@@ -242,8 +242,7 @@ int run(const Options& options) {
     const std::string name = image_family_name(family);
     order.push_back(name);
     Tally& tally = tallies[name];
-    const std::size_t count =
-        family == ImageFamily::grid_sheet ? std::min<std::size_t>(images, 1) : images;
+    const std::size_t count = images_to_draw(family, images);
     for (std::size_t i = 0; i < count; ++i) {
       const DrawnImage image = draw_image(family, options.seed + i);
       ++tally.cases;
