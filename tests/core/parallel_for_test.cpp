@@ -8,6 +8,7 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hullcook {
@@ -73,6 +74,29 @@ TEST(ParallelJoin, TheFirstErrorByIndexIsThrown) {
       ADD_FAILURE() << threads << " threads: nothing thrown";
     } catch (const std::runtime_error& error) {
       EXPECT_STREQ(error.what(), "item 40") << threads << " threads";
+    }
+  }
+}
+
+// Bands of rows: one per thread, none empty, together every row once and in order.
+TEST(ParallelForBands, EveryRowInOneBandInOrder) {
+  EXPECT_EQ(band_count(1000, 8, false), 1);
+  EXPECT_EQ(band_count(1000, 1, true), 1);
+  EXPECT_EQ(band_count(3, 8, true), 3);
+  for (int rows : {1, 2, 7, 1000}) {
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+      const int bands = band_count(rows, threads, true);
+      std::vector<std::pair<int, int>> spans(static_cast<std::size_t>(bands));
+      parallel_for_bands(rows, bands, [&](std::size_t band, int first, int end) {
+        spans[band] = {first, end};
+      });
+      int next = 0;
+      for (const auto& [first, end] : spans) {
+        EXPECT_EQ(first, next) << rows << " rows, " << threads << " threads";
+        EXPECT_LT(first, end) << rows << " rows, " << threads << " threads";
+        next = end;
+      }
+      EXPECT_EQ(next, rows) << rows << " rows, " << threads << " threads";
     }
   }
 }

@@ -256,15 +256,11 @@ class AssetDecomposer {
   // The pieces read off each tree (on the threads), in the trees' order.
   template <typename Read>
   std::vector<Piece> joined(const Read& read) const {
-    return parallel_join<Piece>(
-        trees_.size(), threads_, [&](std::size_t r, unsigned, std::vector<Piece>& out) {
-          std::vector<Piece> pieces = read(r);
-          if (out.empty()) {
-            out = std::move(pieces);
-          } else {
-            std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
-          }
-        });
+    return parallel_join<Piece>(trees_.size(), threads_,
+                                [&](std::size_t r, unsigned, std::vector<Piece>& out) {
+                                  std::vector<Piece> pieces = read(r);
+                                  std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
+                                });
   }
 
   DecomposeSettings settings_;

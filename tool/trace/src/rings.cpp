@@ -285,12 +285,9 @@ class Simplifier {
     };
     // The grid is built in bands of rows, one per worker: each walks every segment in order and
     // writes only its own rows, so a cell's order is the one-thread order.
-    const bool threaded = threads_ > 1 && segments.size() >= kEdgesWorthAThread;
-    const int bands = threaded ? static_cast<int>(std::min<unsigned>(threads_, rows)) : 1;
+    const int bands = band_count(rows, threads_, segments.size() >= kEdgesWorthAThread);
     auto for_each_band = [&](auto&& enter) {
-      parallel_for(static_cast<std::size_t>(bands), threads_, [&](std::size_t band, unsigned) {
-        const int band_low = static_cast<int>(band * rows / bands);
-        const int band_high = static_cast<int>((band + 1) * rows / bands);
+      parallel_for_bands(rows, bands, [&](std::size_t, int band_low, int band_high) {
         for (std::size_t s = 0; s < segments.size(); ++s) {
           for_each_cell(segments[s], band_low, band_high, [&](std::size_t c) { enter(c, s); });
         }
@@ -407,12 +404,9 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
   };
   // The buckets are built in bands of rows, one per worker: each walks every edge in order and
   // writes only its own rows, so a bucket's order is the one-thread order.
-  const bool threaded = threads > 1 && edge_count >= kEdgesWorthAThread;
-  const int bands = threaded ? static_cast<int>(std::min<unsigned>(threads, rows)) : 1;
+  const int bands = band_count(rows, threads, edge_count >= kEdgesWorthAThread);
   auto for_each_band = [&](auto&& work) {
-    parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, unsigned) {
-      const int band_low = static_cast<int>(band * rows / bands);
-      const int band_high = static_cast<int>((band + 1) * rows / bands);
+    parallel_for_bands(rows, bands, [&](std::size_t, int band_low, int band_high) {
       for (int r = 0; r < count; ++r) {
         for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
           Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];

@@ -177,30 +177,27 @@ MarchedBand march_band(const AlphaImage& image, int threshold, int first_row, in
 // on as one march would number them: the rings are the same whatever the count.
 std::vector<Ring> march(const AlphaImage& image, int threshold, unsigned threads) {
   const int rows = image.height + 1;  // cell rows -1 .. height-1
-  const bool threaded =
-      threads > 1 && static_cast<std::size_t>(image.width) * image.height >= kPixelsWorthAThread;
-  const int band_count = threaded ? static_cast<int>(std::min<unsigned>(threads, rows)) : 1;
-  std::vector<MarchedBand> bands(band_count);
-  parallel_for(static_cast<std::size_t>(band_count), threads, [&](std::size_t b, unsigned) {
-    const int first = -1 + static_cast<int>(b * rows / band_count);
-    const int end = -1 + static_cast<int>((b + 1) * rows / band_count);
-    bands[b] = march_band(image, threshold, first, end);
+  const int band_total = band_count(
+      rows, threads, static_cast<std::size_t>(image.width) * image.height >= kPixelsWorthAThread);
+  std::vector<MarchedBand> bands(band_total);
+  parallel_for_bands(rows, band_total, [&](std::size_t b, int first, int end) {
+    bands[b] = march_band(image, threshold, first - 1, end - 1);
   });
 
   std::vector<Vec2> points;
   std::vector<int> next;
-  if (band_count == 1) {
+  if (band_total == 1) {
     points = std::move(bands[0].points);
     next = std::move(bands[0].next);
   } else {
-    std::vector<int> offsets(band_count, 0);
-    for (int b = 1; b < band_count; ++b) {
+    std::vector<int> offsets(band_total, 0);
+    for (int b = 1; b < band_total; ++b) {
       offsets[b] = offsets[b - 1] + static_cast<int>(bands[b - 1].points.size());
     }
     const std::size_t total = static_cast<std::size_t>(offsets.back()) + bands.back().points.size();
     points.reserve(total);
     next.reserve(total);
-    for (int b = 0; b < band_count; ++b) {
+    for (int b = 0; b < band_total; ++b) {
       // A point above is one of the band above's bottom row.
       auto global = [&](int id) {
         return id >= 0 ? offsets[b] + id : offsets[b - 1] + bands[b - 1].bottom[-id - 1];

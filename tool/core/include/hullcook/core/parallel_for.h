@@ -30,6 +30,23 @@ inline void parallel_for_ranges(
   });
 }
 
+// How many bands of consecutive rows work on `rows` rows splits into: one per thread, at most one
+// per row, and one when the work is not worth a thread.
+inline int band_count(int rows, unsigned threads, bool worth_a_thread) {
+  return worth_a_thread && threads > 1 ? static_cast<int>(std::min<long long>(threads, rows)) : 1;
+}
+
+// Runs work(band, first_row, end_row) for each of `bands` bands of rows [0, rows), in order of
+// rows and each on a thread of its own: for grids every worker builds by walking all the items in
+// order and writing only its own rows, which keeps each row in the one-thread order.
+inline void parallel_for_bands(
+    int rows, int bands, const std::function<void(std::size_t band, int first, int end)>& work) {
+  const std::size_t count = static_cast<std::size_t>(std::max(bands, 1));
+  parallel_for(count, static_cast<unsigned>(count), [&](std::size_t band, unsigned) {
+    work(band, static_cast<int>(band * rows / count), static_cast<int>((band + 1) * rows / count));
+  });
+}
+
 // Below this many items (pieces, rings, trees), doing them all on the caller costs less than
 // starting a thread; regions, each several pieces' work, are worth one from fewer.
 inline constexpr std::size_t kItemsWorthAThread = 16;
