@@ -1,5 +1,5 @@
-// A uniform grid of square cells with items (edges or points) filed in the cells they meet: the
-// spatial index of the output contract's partition check (contract.cpp).
+// A uniform grid of square cells, in which the output contract's partition check (contract.cpp)
+// files items (edges or points) in the cells they meet (see Buckets).
 #pragma once
 
 #include "hullcook/core/polygon.h"
@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 namespace hullcook::detail {
 
@@ -72,35 +71,6 @@ class CellGrid {
   Vec2 low_{0.0, 0.0};
   double size_ = 1.0;
   int columns_ = 1, rows_ = 1;
-};
-
-// Items filed by cell, in increasing order within a cell (compressed rows).
-class CellBuckets {
- public:
-  CellBuckets() = default;
-
-  // file(item, add) calls add(cell) for each cell item is filed in (twice per item: it counts,
-  // then fills).
-  template <typename File>
-  CellBuckets(std::size_t cells, std::size_t items, File&& file) : start_(cells + 1, 0) {
-    for (std::size_t i = 0; i < items; ++i) file(i, [&](std::size_t cell) { ++start_[cell + 1]; });
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-    entries_.resize(start_.back());
-    // Scratch, reused: buckets are built for every region of a cook.
-    thread_local std::vector<std::size_t> fill;
-    fill.assign(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < items; ++i) {
-      file(i, [&](std::size_t cell) { entries_[fill[cell]++] = i; });
-    }
-  }
-
-  const std::size_t* begin(std::size_t cell) const { return entries_.data() + start_[cell]; }
-  const std::size_t* end(std::size_t cell) const { return entries_.data() + start_[cell + 1]; }
-  bool empty(std::size_t cell) const { return start_[cell] == start_[cell + 1]; }
-
- private:
-  std::vector<std::size_t> start_;
-  std::vector<std::size_t> entries_;
 };
 
 }  // namespace hullcook::detail

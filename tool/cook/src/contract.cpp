@@ -4,6 +4,7 @@
 #include "hullcook/core/parallel_for.h"
 #include "outline_distance.h"
 
+#include "hullcook/core/buckets.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
@@ -101,8 +102,11 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
   Vec2 low = region.outer.front(), high = low;
   for (Vec2 p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
   const detail::CellGrid grid(low, high, corners.size());
-  const detail::CellBuckets buckets(grid.cells(), corners.size(), [&](std::size_t c, auto&& add) {
-    add(grid.cell(grid.column(corners[c].point.x), grid.row(corners[c].point.y)));
+  Buckets<std::size_t> buckets;
+  buckets.build(grid.cells(), [&](auto&& add) {
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+      add(grid.cell(grid.column(corners[c].point.x), grid.row(corners[c].point.y)), c);
+    }
   });
   const double margin = thickest_refused(longest) + 1e-6 * grid.cell_size();
   auto ring_name = [](std::size_t r) {
@@ -539,8 +543,11 @@ std::vector<Stretch> cut_at_ends(const std::vector<Stretch>& stretches, double s
   Vec2 low = ends.front(), high = low;
   for (Vec2 p : ends) low = glm::min(low, p), high = glm::max(high, p);
   const detail::CellGrid grid(low, high, ends.size());
-  const detail::CellBuckets buckets(grid.cells(), ends.size(), [&](std::size_t e, auto&& add) {
-    add(grid.cell(grid.column(ends[e].x), grid.row(ends[e].y)));
+  Buckets<std::size_t> buckets;
+  buckets.build(grid.cells(), [&](auto&& add) {
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      add(grid.cell(grid.column(ends[e].x), grid.row(ends[e].y)), e);
+    }
   });
   const double margin = slack + 1e-6 * grid.cell_size();
   std::vector<Stretch> cut;

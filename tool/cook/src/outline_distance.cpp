@@ -209,33 +209,24 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
   columns_ = std::min(kMaxCellsPerSide, static_cast<int>(size.x / cell_) + 1);
   rows_ = std::min(kMaxCellsPerSide, static_cast<int>(size.y / cell_) + 1);
 
-  // Counted first, then filled: the edges of each cell and row in edge order.
-  cell_start_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
-  row_start_.assign(static_cast<std::size_t>(rows_) + 1, 0);
-  auto for_each_place = [&](auto in_cell, auto in_row) {
+  // The edges of each cell and row in edge order.
+  cell_edges_.build(static_cast<std::size_t>(columns_) * rows_, [&](auto&& add) {
     for (std::uint32_t k = 0; k < edges_.size(); ++k) {
       const Edge& e = edges_[k];
       for_each_cell_near(e.a, e.b, 0.0, [&](int column, int row) {
-        in_cell(static_cast<std::size_t>(row) * columns_ + column, k);
+        add(static_cast<std::size_t>(row) * columns_ + column, k);
       });
+    }
+  });
+  row_edges_.build(static_cast<std::size_t>(rows_), [&](auto&& add) {
+    for (std::uint32_t k = 0; k < edges_.size(); ++k) {
+      const Edge& e = edges_[k];
       for (int row = row_of(std::min(e.a.y, e.b.y)), last = row_of(std::max(e.a.y, e.b.y));
            row <= last; ++row) {
-        in_row(static_cast<std::size_t>(row), k);
+        add(static_cast<std::size_t>(row), k);
       }
     }
-  };
-  for_each_place([&](std::size_t cell, std::uint32_t) { ++cell_start_[cell + 1]; },
-                 [&](std::size_t row, std::uint32_t) { ++row_start_[row + 1]; });
-  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-  for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
-  cell_edges_.resize(cell_start_.back());
-  row_edges_.resize(row_start_.back());
-  // Scratch, reused: a cook builds one of these for most pieces.
-  thread_local std::vector<std::uint32_t> cell_fill, row_fill;
-  cell_fill.assign(cell_start_.begin(), cell_start_.end() - 1);
-  row_fill.assign(row_start_.begin(), row_start_.end() - 1);
-  for_each_place([&](std::size_t cell, std::uint32_t k) { cell_edges_[cell_fill[cell]++] = k; },
-                 [&](std::size_t row, std::uint32_t k) { row_edges_[row_fill[row]++] = k; });
+  });
   visited_.assign(edges_.size(), 0);
 }
 
@@ -286,8 +277,8 @@ void OutlineDistance::for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit vi
   }
   for_each_cell_near(a, b, radius, [&](int column, int row) {
     std::size_t cell = static_cast<std::size_t>(row) * columns_ + column;
-    for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
-      std::uint32_t edge = cell_edges_[i];
+    for (const std::uint32_t* k = cell_edges_.begin(cell); k != cell_edges_.end(cell); ++k) {
+      const std::uint32_t edge = *k;
       if (visited_[edge] == query_) continue;
       visited_[edge] = query_;
       visit(edge);
@@ -299,8 +290,8 @@ bool OutlineDistance::contains(Vec2 p) const {
   if (edges_.empty() || p.y < origin_.y || p.y > origin_.y + rows_ * cell_) return false;
   int row = row_of(p.y);
   bool inside = false;
-  for (std::uint32_t i = row_start_[row]; i < row_start_[row + 1]; ++i) {
-    const Edge& e = edges_[row_edges_[i]];
+  for (const std::uint32_t* k = row_edges_.begin(row); k != row_edges_.end(row); ++k) {
+    const Edge& e = edges_[*k];
     if ((e.a.y > p.y) != (e.b.y > p.y) &&
         p.x < e.a.x + (p.y - e.a.y) * (e.b.x - e.a.x) / (e.b.y - e.a.y)) {
       inside = !inside;
@@ -326,8 +317,8 @@ double OutlineDistance::distance(Vec2 p, double limit, EdgeSpan* nearest) const 
     auto scan = [&](int c, int r) {
       if (c < 0 || r < 0 || c >= columns_ || r >= rows_) return;
       std::size_t cell = static_cast<std::size_t>(r) * columns_ + c;
-      for (std::uint32_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
-        const Edge& e = edges_[cell_edges_[i]];
+      for (const std::uint32_t* k = cell_edges_.begin(cell); k != cell_edges_.end(cell); ++k) {
+        const Edge& e = edges_[*k];
         const double squared = point_segment_distance_squared(p, e.a, e.b);
         if (squared < best_squared) best_squared = squared, best_edge = &e;
       }

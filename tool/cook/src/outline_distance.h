@@ -3,6 +3,7 @@
 // sample it.
 #pragma once
 
+#include "hullcook/core/buckets.h"
 #include "hullcook/core/polygon.h"
 
 #include <cstdint>
@@ -68,10 +69,8 @@ class OutlineDistance {
   Vec2 origin_{0, 0};  // the grid's lower corner
   double cell_ = 1;
   int columns_ = 0, rows_ = 0;
-  // Edges by cell and by row of cells (for the ray crossing test), compressed: the edges of
-  // cell c are cell_edges_[cell_start_[c] .. cell_start_[c + 1]).
-  std::vector<std::uint32_t> cell_start_, cell_edges_;
-  std::vector<std::uint32_t> row_start_, row_edges_;
+  // Edge indices by cell, and by row of cells (for the ray crossing test).
+  Buckets<std::uint32_t, std::uint32_t> cell_edges_, row_edges_;
   mutable std::vector<std::uint32_t> visited_;              // per edge: the query that last saw it
   mutable std::vector<std::pair<double, double>> covered_;  // segment_within's intervals
   mutable std::uint32_t query_ = 0;

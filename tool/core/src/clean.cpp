@@ -1,5 +1,6 @@
 #include "hullcook/core/clean.h"
 
+#include "hullcook/core/buckets.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/parallel_for.h"
@@ -97,16 +98,12 @@ class EdgeGrid {
         static_cast<std::size_t>(std::sqrt(double(edges.size()))), 1, 1024));
     x_ = Axis(min_x, max_x, side_);
     y_ = Axis(min_y, max_y, side_);
-    start_.assign(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_) + 1, 0);
-    for (const Edge& e : edges) for_each_cell(e, [&](std::size_t cell) { ++start_[cell + 1]; });
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-    entries_.resize(start_.back());
-    // Scratch, reused: the contract check validates most pieces of a cook this way.
-    thread_local std::vector<std::size_t> fill;
-    fill.assign(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      for_each_cell(edges[i], [&](std::size_t cell) { entries_[fill[cell]++] = i; });
-    }
+    cells_.build(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_),
+                 [&](auto&& add) {
+                   for (std::size_t i = 0; i < edges.size(); ++i) {
+                     for_each_cell(edges[i], [&](std::size_t cell) { add(cell, i); });
+                   }
+                 });
   }
 
   // Calls visit(cell) for each cell that the segment of e passes through or comes within
@@ -139,8 +136,8 @@ class EdgeGrid {
   }
 
   // The edges entered in a cell, in increasing order.
-  const std::size_t* begin(std::size_t cell) const { return entries_.data() + start_[cell]; }
-  const std::size_t* end(std::size_t cell) const { return entries_.data() + start_[cell + 1]; }
+  const std::size_t* begin(std::size_t cell) const { return cells_.begin(cell); }
+  const std::size_t* end(std::size_t cell) const { return cells_.end(cell); }
 
  private:
   static constexpr double kMargin = 1e-9;
@@ -166,8 +163,7 @@ class EdgeGrid {
 
   int side_ = 1;
   Axis x_, y_;
-  std::vector<std::size_t> start_;  // per cell, its first entry in entries_
-  std::vector<std::size_t> entries_;
+  Buckets<std::size_t> cells_;  // the edges entered in each cell
 };
 
 // The first crossing in (ring, index) order: the first edge that meets a non-adjacent edge, and

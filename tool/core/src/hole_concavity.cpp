@@ -1,5 +1,7 @@
 #include "hole_concavity.h"
 
+#include "hullcook/core/buckets.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -88,30 +90,17 @@ class VertexGrid {
     columns_ = static_cast<int>(std::clamp(width / cell_size_, 0.0, 1023.0)) + 1;
     rows_ = static_cast<int>(std::clamp(height / cell_size_, 0.0, 1023.0)) + 1;
     scale_ = 1.0 / cell_size_;
-    cell_start_.assign(static_cast<std::size_t>(columns_ * rows_ + 1), 0);
-    std::vector<int> cell_of_vertex;
-    cell_of_vertex.reserve(count);
-    auto each_ring = [&](auto&& visit) {
-      visit(region.outer, 0);
+    cells_.build(static_cast<std::size_t>(columns_ * rows_), [&](auto&& add) {
+      auto file_ring = [&](const Ring& ring, int ring_id) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Vec2 p = ring[i];
+          add(static_cast<std::size_t>(row_of(p.y) * columns_ + column_of(p.x)),
+              Entry{p, ring_id, i});
+        }
+      };
+      file_ring(region.outer, 0);
       for (std::size_t h = 0; h < region.holes.size(); ++h) {
-        visit(region.holes[h], static_cast<int>(h + 1));
-      }
-    };
-    each_ring([&](const Ring& ring, int) {
-      for (Vec2 p : ring) {
-        const int cell = row_of(p.y) * columns_ + column_of(p.x);
-        cell_of_vertex.push_back(cell);
-        ++cell_start_[static_cast<std::size_t>(cell) + 1];
-      }
-    });
-    for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-    entries_.resize(count);
-    std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
-    std::size_t next = 0;
-    each_ring([&](const Ring& ring, int ring_id) {
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const int slot = fill[static_cast<std::size_t>(cell_of_vertex[next++])]++;
-        entries_[static_cast<std::size_t>(slot)] = {ring[i], ring_id, i};
+        file_ring(region.holes[h], static_cast<int>(h + 1));
       }
     });
   }
@@ -120,14 +109,14 @@ class VertexGrid {
   // nullopt where squared distances could mislead (then scan).
   template <typename Searched>
   std::optional<NearVertex> nearest(Vec2 point, Searched&& searched) const {
-    if (cell_start_.empty()) return std::nullopt;
+    if (cells_.bucket_count() == 0) return std::nullopt;
     const int column = column_of(point.x), row = row_of(point.y);
     NearVertex best;
     double best_squared = std::numeric_limits<double>::infinity();
     auto visit_cell = [&](int x, int y) {
       const std::size_t cell = static_cast<std::size_t>(y * columns_ + x);
-      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        const Entry& entry = entries_[static_cast<std::size_t>(k)];
+      for (const Entry* k = cells_.begin(cell); k != cells_.end(cell); ++k) {
+        const Entry& entry = *k;
         if (!searched(entry.ring)) continue;
         const Vec2 offset = entry.point - point;
         const double squared = offset.x * offset.x + offset.y * offset.y;
@@ -173,8 +162,7 @@ class VertexGrid {
   }
   double min_x_ = 0.0, min_y_ = 0.0, cell_size_ = 0.0, scale_ = 0.0;
   int columns_ = 1, rows_ = 1;
-  std::vector<int> cell_start_;  // per cell, its first entry in entries_ (empty: no grid)
-  std::vector<Entry> entries_;
+  Buckets<Entry, int> cells_;  // the vertices in each cell (none: no grid)
 };
 
 // Eq. 5's closest vertex x for the two ends (p, q) of a hole: the end nearer to a vertex is joined

@@ -2,6 +2,7 @@
 // check: any simplified edge that crosses or touches another is refined until none does).
 #include "rings.h"
 
+#include "hullcook/core/buckets.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/parallel_for.h"
 
@@ -293,28 +294,21 @@ class Simplifier {
         }
       });
     };
-    std::vector<int>& starts = grid_starts_;
-    std::vector<int>& entries = grid_entries_;
-    starts.assign(static_cast<std::size_t>(columns) * rows + 1, 0);
-    for_each_band([&](std::size_t c, std::size_t) { ++starts[c + 1]; });
-    for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
-    entries.resize(static_cast<std::size_t>(starts.back()));
-    std::vector<int>& fill = grid_fill_;
-    fill.assign(starts.begin(), starts.end() - 1);
-    for_each_band([&](std::size_t c, std::size_t s) { entries[fill[c]++] = static_cast<int>(s); });
+    Buckets<int, int>& grid = grid_;
+    grid.build(static_cast<std::size_t>(columns) * rows, [&](auto&& add) {
+      for_each_band([&](std::size_t c, std::size_t s) { add(c, static_cast<int>(s)); });
+    });
     // The pairs of each range of cells, joined in the cells' order.
-    const std::size_t cells = starts.size() - 1;
+    const std::size_t cells = grid.bucket_count();
     return parallel_join<std::pair<int, int>>(
         (cells + kCellsPerRange - 1) / kCellsPerRange, static_cast<unsigned>(bands),
         [&](std::size_t range, unsigned, std::vector<std::pair<int, int>>& out) {
           for (std::size_t c = range * kCellsPerRange,
                            end = std::min(cells, (range + 1) * kCellsPerRange);
                c < end; ++c) {
-            for (int i = starts[c]; i < starts[c + 1]; ++i) {
-              for (int j = i + 1; j < starts[c + 1]; ++j) {
-                if (touch(segments[entries[i]], segments[entries[j]])) {
-                  out.emplace_back(entries[i], entries[j]);
-                }
+            for (const int* i = grid.begin(c); i != grid.end(c); ++i) {
+              for (const int* j = i + 1; j != grid.end(c); ++j) {
+                if (touch(segments[*i], segments[*j])) out.emplace_back(*i, *j);
               }
             }
           }
@@ -328,7 +322,7 @@ class Simplifier {
   std::vector<std::vector<char>> keep_;
   std::vector<std::pair<int, int>> peucker_stack_;  // douglas_peucker's, reused
   // The grid of touching_pairs(), kept between rounds so that it is allocated once.
-  mutable std::vector<int> grid_starts_, grid_entries_, grid_fill_;
+  mutable Buckets<int, int> grid_;
 };
 
 // Drops vertices on the straight line through their neighbours (within rounding), which does not
@@ -417,15 +411,14 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
       }
     });
   };
-  std::vector<int> starts(static_cast<std::size_t>(rows) + 1, 0);
-  for_each_band([&](int row, Vec2, Vec2, int, std::size_t) { ++starts[row + 1]; });
-  for (int row = 0; row < rows; ++row) starts[row + 1] += starts[row];
-  std::vector<BucketEdge> edges(static_cast<std::size_t>(starts.back()));
-  std::vector<int> fill(starts.begin(), starts.end() - 1);
+  Buckets<BucketEdge, int> edges;
   std::vector<double> widest(rows, 0.0);  // the largest x extent of an edge in each bucket
-  for_each_band([&](int row, Vec2 a, Vec2 b, int r, std::size_t i) {
-    edges[fill[row]++] = {std::min(a.x, b.x), r, static_cast<int>(i)};
-    widest[row] = std::max(widest[row], std::abs(b.x - a.x));
+  edges.build(static_cast<std::size_t>(rows), [&](auto&& add) {
+    for_each_band([&](int row, Vec2 a, Vec2 b, int r, std::size_t i) {
+      add(static_cast<std::size_t>(row), BucketEdge{std::min(a.x, b.x), r, static_cast<int>(i)});
+      // Taken on both passes alike: a maximum.
+      widest[row] = std::max(widest[row], std::abs(b.x - a.x));
+    });
   });
   // A row's edges are sorted (for the walk below) only when the row has many queries: with a
   // few, one scan of its edges is cheaper.
@@ -441,7 +434,7 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
           // Edges of equal min_x may come in any order: rings do not touch, so
           // no two rings cross a row at the same x, and the walk below stops
           // only past every edge that could still be hit.
-          std::sort(edges.begin() + starts[row], edges.begin() + starts[row + 1],
+          std::sort(edges.begin(row), edges.end(row),
                     [](const BucketEdge& e, const BucketEdge& f) { return e.min_x < f.min_x; });
         }
       });
@@ -459,8 +452,8 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
           int hit = -1;
           double hit_x = std::numeric_limits<double>::lowest();
           const int row = row_of(r);
-          const auto bucket_begin = edges.begin() + starts[row],
-                     bucket_end = edges.begin() + starts[row + 1];
+          const BucketEdge* const bucket_begin = std::as_const(edges).begin(row);
+          const BucketEdge* const bucket_end = std::as_const(edges).end(row);
           auto consider = [&](const BucketEdge& e) {
             if (e.ring == r || !(e.min_x < p.x)) return;
             const Ring& ring = rings[e.ring];

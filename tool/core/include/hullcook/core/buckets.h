@@ -1,0 +1,67 @@
+// Items filed in numbered buckets (the cells or rows of a spatial grid), each bucket's items in
+// the order they were filed: a counting sort into compressed rows. One place for the index that
+// the tracer's nesting and untangling grids, the cleaner's crossing grid, the outline distance
+// and the output contract's grids each built by hand.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace hullcook {
+
+// entries()[start(b) .. start(b + 1)) are bucket b's, in filing order. Offset is the type of
+// the offsets (a narrower one halves the index of a grid with many empty cells).
+template <typename Entry, typename Offset = std::size_t>
+class Buckets {
+ public:
+  Buckets() = default;
+
+  // Files entries into bucket_count buckets: file(add) calls add(bucket, entry) for each filing.
+  // It is called twice, to count and then to fill, and must file the same entries in the same
+  // buckets in the same order both times. It may spread its filings over threads if every
+  // bucket is filed from one thread only (each bucket's order is then still its thread's).
+  // The storage of an earlier build is reused.
+  template <typename File>
+  void build(std::size_t bucket_count, File&& file) {
+    start_.assign(bucket_count + 1, 0);
+    Offset* const counts = start_.data() + 1;
+    file([counts](std::size_t bucket, const Entry&) { ++counts[bucket]; });
+    for (std::size_t b = 1; b <= bucket_count; ++b) start_[b] += start_[b - 1];
+    entries_.resize(static_cast<std::size_t>(start_.back()));
+    // Scratch kept per thread (most grids are built once per region or piece). A reference, so
+    // that filings on worker threads share the builder's, not their own thread's.
+    std::vector<Offset>& next = scratch();
+    next.assign(start_.begin(), start_.end() - 1);
+    Offset* const slots = next.data();
+    Entry* const entries = entries_.data();
+    file([slots, entries](std::size_t bucket, const Entry& entry) {
+      entries[slots[bucket]++] = entry;
+    });
+  }
+
+  std::size_t bucket_count() const { return start_.empty() ? 0 : start_.size() - 1; }
+  Offset start(std::size_t bucket) const { return start_[bucket]; }
+  std::size_t size(std::size_t bucket) const {
+    return static_cast<std::size_t>(start_[bucket + 1] - start_[bucket]);
+  }
+  bool empty(std::size_t bucket) const { return start_[bucket] == start_[bucket + 1]; }
+
+  const Entry* begin(std::size_t bucket) const { return entries_.data() + start_[bucket]; }
+  const Entry* end(std::size_t bucket) const { return entries_.data() + start_[bucket + 1]; }
+  // Writable, to reorder a bucket in place (e.g. sort it for a walk).
+  Entry* begin(std::size_t bucket) { return entries_.data() + start_[bucket]; }
+  Entry* end(std::size_t bucket) { return entries_.data() + start_[bucket + 1]; }
+
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  static std::vector<Offset>& scratch() {
+    thread_local std::vector<Offset> next;
+    return next;
+  }
+
+  std::vector<Offset> start_;  // bucket b's first entry; start_.back() is the total
+  std::vector<Entry> entries_;
+};
+
+}  // namespace hullcook
