@@ -136,6 +136,47 @@ TEST(Contract, PiecesWhoseAreasAddUpInTheWrongPlaceBreakThePartition) {
   EXPECT_TRUE(says(violations, "the pieces do not partition the outline")) << listed(violations);
 }
 
+// Each region's pieces cancel that region's boundary (issue 17: the regions are checked apart,
+// on the threads): pieces given to the wrong region, or to one the outline does not have, break
+// the partition although their union is the outline.
+TEST(Contract, Issue17_EachRegionsPiecesPartitionThatRegion) {
+  const Ring left{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, right{{3, 0}, {4, 0}, {4, 1}, {3, 1}};
+  const std::vector<Region> outline{Region{left, {}}, Region{right, {}}};
+  std::vector<CookedPiece> pieces{CookedPiece{Region{left, {}}, left, 0.0, 0},
+                                  CookedPiece{Region{right, {}}, right, 0.0, 1}};
+  const ContractTerms terms{0.5, Measure::h1, kLimits};
+  for (unsigned threads : {1u, 2u}) {
+    EXPECT_TRUE(find_contract_violations(pieces, outline, terms, threads).empty()) << threads;
+  }
+  std::swap(pieces[0].region, pieces[1].region);
+  EXPECT_TRUE(says(find_contract_violations(pieces, outline, terms),
+                   "the pieces do not partition the outline"));
+  pieces[0].region = 0, pieces[1].region = 2;
+  const std::vector<std::string> violations = find_contract_violations(pieces, outline, terms);
+  EXPECT_TRUE(says(violations, "piece 2 is of region 3, but the outline has 2"))
+      << listed(violations);
+}
+
+// A cook labels every piece with its region, through the engine limits' splits and merges: a
+// sheet of many blobs keeps its contract (checked region by region) with any thread count.
+TEST(Contract, Issue17_CookedPiecesCarryTheirRegions) {
+  Settings settings;
+  settings.tau = Tolerance{1.0, false};
+  for (unsigned threads : {1u, 3u}) {
+    settings.threads = threads;
+    const CookedAsset asset =
+        cook({kSprites / "teeworlds__mapres__grass_doodads.png"}, settings).assets.at(0);
+    ASSERT_GT(asset.regions.size(), 30u);
+    std::vector<std::size_t> per_region(asset.regions.size(), 0);
+    for (const CookedPiece& piece : asset.pieces) {
+      ASSERT_LT(piece.region, asset.regions.size());
+      ++per_region[piece.region];
+    }
+    for (std::size_t count : per_region) EXPECT_GT(count, 0u);
+    EXPECT_TRUE(violations_of(asset).empty()) << listed(violations_of(asset));
+  }
+}
+
 TEST(Contract, ShrunkHullIsNamed) {
   CookedAsset asset = grid_sprite();
   const std::size_t k = 7;

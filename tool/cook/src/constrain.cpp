@@ -156,7 +156,10 @@ class Constrainer {
       for (; depth < 3; ++depth) {
         std::vector<CookedPiece> parts = split_(piece.component, tau_ * kSplitFractions[depth]);
         if (parts.size() > 1) {
-          for (CookedPiece& part : parts) add(std::move(part), depth + 1, out);
+          for (CookedPiece& part : parts) {
+            part.region = piece.region;
+            add(std::move(part), depth + 1, out);
+          }
           return;
         }
       }
@@ -164,7 +167,8 @@ class Constrainer {
         if (auto halves = halve_convex(piece.component.outer)) {
           for (Ring* half : {&halves->first, &halves->second}) {
             Ring hull = convex_hull(*half);
-            add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0}, 3, out);
+            add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0, piece.region}, 3,
+                out);
           }
           return;
         }
@@ -188,7 +192,10 @@ class Constrainer {
     std::vector<Option> options;
     for (std::size_t j = 0; j < slots_.size(); ++j) {
       const Slot& other = slots_[j];
-      if (j == k || !other.placed || !box.touches(Box(other.piece.component.outer))) continue;
+      if (j == k || !other.placed || other.piece.region != small.region ||
+          !box.touches(Box(other.piece.component.outer))) {
+        continue;
+      }
       if (std::optional<Region> merged = merge_components(small.component, other.piece.component)) {
         double shared = perimeter(small.component.outer) + perimeter(other.piece.component.outer) -
                         perimeter(merged->outer);
@@ -215,8 +222,8 @@ class Constrainer {
       // The merged component must be one piece at τ under the asset's measure.
       std::vector<CookedPiece> measured = split_(merged, tau_);
       if (measured.size() != 1) continue;
-      neighbour.piece =
-          CookedPiece{std::move(option.merged), std::move(merged_hull), measured[0].concavity};
+      neighbour.piece = CookedPiece{std::move(option.merged), std::move(merged_hull),
+                                    measured[0].concavity, neighbour.piece.region};
       neighbour.hull = std::move(*hull);
       slots_[k].merged = true;
       return true;

@@ -193,11 +193,15 @@ std::size_t vertex_count(const std::vector<Region>& regions) {
   return count;
 }
 
-std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces) {
+// region_of: each piece's region (see CookedPiece::region), if not all the first's.
+std::vector<CookedPiece> to_cooked(std::vector<Piece> pieces,
+                                   const std::vector<std::uint32_t>* region_of = nullptr) {
   std::vector<CookedPiece> cooked;
   cooked.reserve(pieces.size());
-  for (Piece& piece : pieces) {
-    cooked.push_back({std::move(piece.component), std::move(piece.hull), piece.concavity});
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    Piece& piece = pieces[k];
+    cooked.push_back({std::move(piece.component), std::move(piece.hull), piece.concavity,
+                      region_of ? (*region_of)[k] : 0u});
   }
   return cooked;
 }
@@ -214,17 +218,20 @@ class AssetDecomposer {
                  [&](std::size_t r, unsigned) { trees_[r] = decompose(regions[r], settings); });
   }
 
-  std::vector<Piece> pieces_at(double tau) const {
-    return joined([&](std::size_t r) { return trees_[r].pieces_at(tau); });
+  // The pieces at tau, region after region; region_of gets the region of each.
+  std::vector<Piece> pieces_at(double tau, std::vector<std::uint32_t>& region_of) const {
+    return joined([&](std::size_t r) { return trees_[r].pieces_at(tau); }, region_of);
   }
 
   // The same, for the last level read: the pieces' components are moved out of the trees.
-  std::vector<Piece> take_pieces_at(double tau) {
+  std::vector<Piece> take_pieces_at(double tau, std::vector<std::uint32_t>& region_of) {
     // Each tree is freed on the thread that read it, not all of them on the caller after.
-    std::vector<Piece> pieces = joined([&](std::size_t r) {
-      DecompositionTree tree = std::move(trees_[r]);
-      return std::move(tree).pieces_at(tau);
-    });
+    std::vector<Piece> pieces = joined(
+        [&](std::size_t r) {
+          DecompositionTree tree = std::move(trees_[r]);
+          return std::move(tree).pieces_at(tau);
+        },
+        region_of);
     trees_.clear();
     return pieces;
   }
@@ -253,14 +260,22 @@ class AssetDecomposer {
   }
 
  private:
-  // The pieces read off each tree (on the threads), in the trees' order.
+  // The pieces read off each tree (on the threads), in the trees' order, and their regions.
   template <typename Read>
-  std::vector<Piece> joined(const Read& read) const {
-    return parallel_join<Piece>(trees_.size(), threads_,
-                                [&](std::size_t r, unsigned, std::vector<Piece>& out) {
-                                  std::vector<Piece> pieces = read(r);
-                                  std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
-                                });
+  std::vector<Piece> joined(const Read& read, std::vector<std::uint32_t>& region_of) const {
+    std::vector<std::size_t> counts(trees_.size());
+    std::vector<Piece> joined = parallel_join<Piece>(
+        trees_.size(), threads_, [&](std::size_t r, unsigned, std::vector<Piece>& out) {
+          std::vector<Piece> pieces = read(r);
+          counts[r] = pieces.size();
+          std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
+        });
+    region_of.clear();
+    region_of.reserve(joined.size());
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+      region_of.insert(region_of.end(), counts[r], static_cast<std::uint32_t>(r));
+    }
+    return joined;
   }
 
   DecomposeSettings settings_;
@@ -502,10 +517,12 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   // contract check, where a cook's memory peaks, never need them (a third of that peak on a sheet
   // of thousands of blobs).
   std::vector<std::vector<Piece>> level_pieces;
+  std::vector<std::vector<std::uint32_t>> level_regions(level_taus.size());
   level_pieces.reserve(level_taus.size());
   for (std::size_t l = 0; l < level_taus.size(); ++l) {
-    level_pieces.push_back(l + 1 < level_taus.size() ? decomposer->pieces_at(level_taus[l])
-                                                     : decomposer->take_pieces_at(level_taus[l]));
+    level_pieces.push_back(l + 1 < level_taus.size()
+                               ? decomposer->pieces_at(level_taus[l], level_regions[l])
+                               : decomposer->take_pieces_at(level_taus[l], level_regions[l]));
   }
   decomposer.reset();
   asset.stats.decompose_ms = milliseconds_since(decompose_start);
@@ -522,7 +539,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
       }
     }
     std::vector<CookedPiece> constrained = apply_engine_limits(
-        to_cooked(std::move(pieces)), tau, limits, split, asset.source, threads);
+        to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split, asset.source, threads);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {

@@ -42,9 +42,10 @@ struct PhysicsProperties {
 
 // One approximately convex piece of the decomposition.
 struct CookedPiece {
-  Region component;  // [output units] the piece of the input polygon
-  Ring hull;         // [output units] its convex hull (after engine constraints), CCW
-  double concavity;  // [output units] under the asset's measure
+  Region component;          // [output units] the piece of the input polygon
+  Ring hull;                 // [output units] its convex hull (after engine constraints), CCW
+  double concavity;          // [output units] under the asset's measure
+  std::uint32_t region = 0;  // the index of the outline's region the piece was cut from
 };
 
 // One level of detail: the hulls of the decomposition at tolerance tau.
