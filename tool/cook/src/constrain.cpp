@@ -92,10 +92,11 @@ class Constrainer {
   // Places every piece, on up to threads threads: each piece's slots are its own (they depend
   // on it alone) and are joined in the pieces' order, whatever the thread count.
   void add_all(std::vector<CookedPiece> pieces, unsigned threads) {
-    slots_ = parallel_join<Slot>(pieces.size(), threads,
-                                 [&](std::size_t k, unsigned, std::vector<Slot>& out) {
-                                   add(std::move(pieces[k]), 0, out);
-                                 });
+    // Most pieces are one slot each.
+    slots_ = parallel_join<Slot>(
+        pieces.size(), threads,
+        [&](std::size_t k, unsigned, std::vector<Slot>& out) { add(std::move(pieces[k]), 0, out); },
+        kItemsWorthAThread, pieces.size());
   }
 
   // Places the pieces no hull of their own could hold: each is merged into a neighbour, or

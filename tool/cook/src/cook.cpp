@@ -220,7 +220,8 @@ class AssetDecomposer {
 
   // The pieces at tau, region after region; region_of gets the region of each.
   std::vector<Piece> pieces_at(double tau, std::vector<std::uint32_t>& region_of) const {
-    return joined([&](std::size_t r) { return trees_[r].pieces_at(tau); }, region_of);
+    return joined([&](std::size_t r) { return trees_[r].pieces_at(tau); }, region_of,
+                  piece_count_at(tau));
   }
 
   // The same, for the last level read: the pieces' components are moved out of the trees.
@@ -231,7 +232,7 @@ class AssetDecomposer {
           DecompositionTree tree = std::move(trees_[r]);
           return std::move(tree).pieces_at(tau);
         },
-        region_of);
+        region_of, piece_count_at(tau));
     trees_.clear();
     return pieces;
   }
@@ -260,16 +261,20 @@ class AssetDecomposer {
   }
 
  private:
-  // The pieces read off each tree (on the threads), in the trees' order, and their regions.
+  // The pieces read off each tree (on the threads), in the trees' order, and their regions;
+  // `expected` of them.
   template <typename Read>
-  std::vector<Piece> joined(const Read& read, std::vector<std::uint32_t>& region_of) const {
+  std::vector<Piece> joined(const Read& read, std::vector<std::uint32_t>& region_of,
+                            std::size_t expected) const {
     std::vector<std::size_t> counts(trees_.size());
     std::vector<Piece> joined = parallel_join<Piece>(
-        trees_.size(), threads_, [&](std::size_t r, unsigned, std::vector<Piece>& out) {
+        trees_.size(), threads_,
+        [&](std::size_t r, unsigned, std::vector<Piece>& out) {
           std::vector<Piece> pieces = read(r);
           counts[r] = pieces.size();
           std::move(pieces.begin(), pieces.end(), std::back_inserter(out));
-        });
+        },
+        kItemsWorthAThread, expected);
     region_of.clear();
     region_of.reserve(joined.size());
     for (std::size_t r = 0; r < counts.size(); ++r) {

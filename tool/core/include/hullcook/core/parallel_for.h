@@ -55,12 +55,15 @@ inline constexpr std::size_t kRegionsWorthAThread = 8;
 // Runs produce(i, worker, out) for every i below count on up to `threads` threads, each i
 // appending what it makes to an `out` of its own, and returns the outs joined in index order:
 // the same vector whatever the thread count. On one thread, or below min_count items, every i
-// appends to the result itself. Errors as parallel_for's.
+// appends to the result itself, which first reserves `expected` (a guess of the total: a
+// doubling vector of large items, reallocated, held both copies at once). Errors as
+// parallel_for's.
 template <typename T, typename Produce>
 std::vector<T> parallel_join(std::size_t count, unsigned threads, const Produce& produce,
-                             std::size_t min_count = kItemsWorthAThread) {
+                             std::size_t min_count = kItemsWorthAThread, std::size_t expected = 0) {
   std::vector<T> joined;
   if (threads <= 1 || count < min_count) {
+    joined.reserve(expected);
     for (std::size_t i = 0; i < count; ++i) produce(i, 0u, joined);
     return joined;
   }
