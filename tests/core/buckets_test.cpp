@@ -76,6 +76,29 @@ TEST(Buckets, ARebuildForgetsTheLastBuild) {
   expect_holds(index, expected({}, 3));
 }
 
+// A file that builds buckets of its own (the same types) on the same thread: each build keeps its
+// own filling position, and both indexes hold their entries.
+TEST(Buckets, ABuildInsideAFileKeepsBothIndexes) {
+  const auto outer_filed = filings(40, 300, 7), inner_filed = filings(25, 200, 8);
+  Buckets<int> outer, inner;
+  outer.build(40, [&](auto&& add) {
+    for (std::size_t k = 0; k < outer_filed.size(); ++k) {
+      if (k == outer_filed.size() / 2) {
+        inner.build(25, [&](auto&& add_inner) {
+          for (const auto& [item, bucket] : inner_filed) add_inner(bucket, item);
+        });
+      }
+      add(outer_filed[k].second, outer_filed[k].first);
+    }
+  });
+  {
+    SCOPED_TRACE("outer");
+    expect_holds(outer, expected(outer_filed, 40));
+  }
+  SCOPED_TRACE("inner");
+  expect_holds(inner, expected(inner_filed, 25));
+}
+
 // Filings spread over threads, each band of buckets filed by one thread (as the tracer's grids
 // file their rows), give the one-thread index.
 TEST(Buckets, FiledByBandsOnThreadsAsByOneThread) {

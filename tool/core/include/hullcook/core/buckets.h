@@ -28,9 +28,19 @@ class Buckets {
     file([counts](std::size_t bucket, const Entry&) { ++counts[bucket]; });
     for (std::size_t b = 1; b <= bucket_count; ++b) start_[b] += start_[b - 1];
     entries_.resize(static_cast<std::size_t>(start_.back()));
-    // Scratch kept per thread (most grids are built once per region or piece). A reference, so
+    // Scratch kept per thread (most grids are built once per region or piece), unless a build
+    // on this thread is using it (a file that builds buckets of its own). Taken by pointer, so
     // that filings on worker threads share the builder's, not their own thread's.
-    std::vector<Offset>& next = scratch();
+    struct Claim {
+      bool& in_use;
+      const bool taken = !in_use;
+      explicit Claim(bool& flag) : in_use(flag) { in_use = true; }
+      ~Claim() {
+        if (taken) in_use = false;
+      }
+    } claim(scratch_in_use());
+    std::vector<Offset> own;
+    std::vector<Offset>& next = claim.taken ? scratch() : own;
     next.assign(start_.begin(), start_.end() - 1);
     Offset* const slots = next.data();
     Entry* const entries = entries_.data();
@@ -55,9 +65,15 @@ class Buckets {
   const std::vector<Entry>& entries() const { return entries_; }
 
  private:
+  // Per thread and per Buckets type (not per build's File type, which each call site has of its
+  // own): a build inside another's file must see the scratch taken.
   static std::vector<Offset>& scratch() {
     thread_local std::vector<Offset> next;
     return next;
+  }
+  static bool& scratch_in_use() {
+    thread_local bool in_use = false;
+    return in_use;
   }
 
   std::vector<Offset> start_;  // bucket b's first entry; start_.back() is the total
