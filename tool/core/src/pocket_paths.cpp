@@ -165,9 +165,14 @@ void funnel_paths(const std::vector<Vec2>& q, const Bridge& bridge, double* dist
 }  // namespace
 
 void shortest_paths_to_bridge(const std::vector<Vec2>& q, std::vector<double>& distance) {
+  if (q.size() < 3) {
+    distance.assign(q.size(), 0.0);
+    return;
+  }
   const std::size_t m = q.size() - 1;
-  distance.assign(q.size(), 0.0);
-  if (q.size() < 3) return;
+  // Every entry is written below (the parts and the cuts between them cover 1..m-1): no fill.
+  distance.resize(q.size());
+  distance[0] = distance[m] = 0.0;
   const Vec2 s = q.front();
   const Vec2 along = q.back() - s;
   const double length = detail::length(along);
