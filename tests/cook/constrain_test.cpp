@@ -54,6 +54,12 @@ void expect_within(const std::vector<CookedPiece>& pieces, double tau, const Eng
   }
 }
 
+double area_of(const std::vector<CookedPiece>& pieces) {
+  double area = 0;
+  for (const CookedPiece& piece : pieces) area += ring_area(piece.component.outer);
+  return area;
+}
+
 TEST(EngineLimits, RoundShapeGrowsToEightVerticesWithinTau) {
   // A circumscribed octagon around a radius-10 circle reaches 10 / cos(22.5°) - 10 ≈ 0.82 out.
   EngineLimits limits{8, 0.005};
@@ -69,9 +75,7 @@ TEST(EngineLimits, TightToleranceSplitsConvexPiecesExactly) {
   Ring circle = regular_polygon(40, 10);
   auto pieces = apply_engine_limits({convex_piece(circle)}, 0.001, limits, no_split, "test");
   EXPECT_GT(pieces.size(), 1u);
-  double area = 0;
-  for (const CookedPiece& piece : pieces) area += ring_area(piece.component.outer);
-  EXPECT_NEAR(area, ring_area(circle), 1e-9);
+  EXPECT_NEAR(area_of(pieces), ring_area(circle), 1e-9);
   expect_within(pieces, 0.001, limits);
 }
 
@@ -317,6 +321,40 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
   // The shortcut is taken: the same fits, with fewer outline queries.
   EXPECT_LT(queries_with_shortcut * 5, queries_without * 4)
       << queries_with_shortcut << " queries with the shortcut, " << queries_without << " without";
+}
+
+// From a seeded random simple polygon on a 0.01 grid (the stress family random_simple): its
+// vertices (0.82, 0.12), (0.88, 0.18), (0.92, 0.22) are collinear in decimal, but in binary the
+// middle one turns left by an orientation of 5.6e-19. At τ 0 they stay in one convex piece.
+const Ring kNearlyCollinearPiece{
+    {0.82, 0.12}, {0.88, 0.18}, {0.92, 0.22}, {0.58, 0.45}, {0.72, 0.19}};
+
+// turn_height rounds that turn to 0: no weld-0 engine hull keeps the vertex, and no growth within
+// τ 0 drops it. Halving from vertex 0 cut off (0.82, 0.12)-(0.88, 0.18)-(0.92, 0.22), a half
+// without area, so the piece stayed unplaced: an internal error on valid input.
+TEST(EngineLimits, ConvexPieceWithATurnTooSmallToMeasureIsHalvedThroughIt) {
+  const EngineLimits limits{8, 0.0};
+  std::vector<CookedPiece> pieces;
+  ASSERT_NO_THROW(pieces = apply_engine_limits({convex_piece(kNearlyCollinearPiece)}, 0.0, limits,
+                                               no_split, "test"));
+  EXPECT_GE(pieces.size(), 2u);
+  EXPECT_NEAR(area_of(pieces), ring_area(kNearlyCollinearPiece), 1e-15);
+  expect_within(pieces, 0.0, limits);
+}
+
+// A segment along both nearly collinear edges passes 4e-18 from their shared vertex: the disc
+// there covers it. The discriminant b² - ac cancelled to a negative value, the capsules left a
+// gap at the vertex, and the contract reported the hull edge "9.9e-10 beyond the outline" at τ 0.
+TEST(OutlineDistance, SegmentAlongNearlyCollinearEdgesIsWithinThroughTheirSharedVertex) {
+  const Region region{kNearlyCollinearPiece, {}};
+  const OutlineDistance outline({&region});
+  // The hull edge that skips (0.88, 0.18), its ends as seal() left them.
+  EXPECT_TRUE(outline.segment_within({0.81999999999999984, 0.11999999999999958},
+                                     {0.92000000000000026, 0.21999999999999989}, 1e-9));
+  EXPECT_TRUE(outline.segment_within({0.82, 0.12}, {0.92, 0.22}, 1e-12));
+  // Inside is within; 0.12 out of the piece is not.
+  EXPECT_TRUE(outline.segment_within({0.82, 0.12}, {0.58, 0.45}, 1e-12));
+  EXPECT_FALSE(outline.segment_within({0.82, 0.12}, {0.82, 0.0}, 1e-3));
 }
 
 }  // namespace

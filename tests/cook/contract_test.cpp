@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
 
@@ -425,6 +426,80 @@ TEST(Contract, PiecesSmallerThanTheInputFloorKeepTheContract) {
   const std::vector<std::string> violations =
       find_contract_violations(pieces, regions, {tau, Measure::h1, EngineLimits{0, 0.0}});
   EXPECT_TRUE(violations.empty()) << listed(violations);
+}
+
+// A seeded random simple polygon (the stress family random_simple, on a 0.01 grid) with three
+// vertices collinear in decimal, not quite in binary, cooked whole at τ 0. With the default weld
+// the cook's own check reported a hull edge along them "9.9e-10 beyond the outline" (exit 4);
+// with weld 0 one of its pieces could be placed under no engine hull (exit 4). Both are valid.
+TEST(Contract, RandomPolygonWithNearlyCollinearVerticesCooksAtTauZero) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "hullcook_contract_nearly_collinear.poly";
+  std::ofstream(file) << R"(1
+50 out
+1.0 0.53
+0.95 0.53
+0.73 0.53
+0.77 0.55
+0.9 0.57
+0.99 0.61
+0.65 0.55
+0.75 0.61
+0.9 0.72
+0.91 0.79
+0.82 0.78
+0.74 0.72
+0.62 0.65
+0.64 0.83
+0.55 0.76
+0.56 0.95
+0.51 0.61
+0.4 0.99
+0.4 0.74
+0.43 0.63
+0.41 0.63
+0.18 0.88
+0.23 0.78
+0.15 0.85
+0.12 0.79
+0.41 0.56
+0.25 0.58
+0.39 0.53
+0.01 0.6
+0.29 0.48
+0.23 0.47
+0.02 0.38
+0.09 0.39
+0.31 0.44
+0.44 0.45
+0.45 0.45
+0.23 0.09
+0.46 0.41
+0.53 0.19
+0.59 0.21
+0.53 0.42
+0.72 0.05
+0.72 0.19
+0.82 0.11
+0.82 0.12
+0.88 0.18
+0.92 0.22
+0.58 0.45
+0.61 0.47
+0.77 0.45
+1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40 41 42 43 44 45 46 47 48 49 50
+)";
+  for (const double weld : {kDefaultWeld, 0.0}) {
+    Settings settings;
+    settings.tau = Tolerance{0.0, false};
+    settings.weld = weld;
+    CookedAsset asset;
+    ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0)) << "weld " << weld;
+    EXPECT_GT(asset.pieces.size(), 10u);
+    const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, weld});
+    EXPECT_TRUE(violations.empty()) << "weld " << weld << listed(violations);
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace

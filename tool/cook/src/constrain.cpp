@@ -69,16 +69,32 @@ bool is_convex_without_holes(const CookedPiece& piece) {
   return hull_area - component_area <= 1e-12 * std::max(1.0, hull_area);
 }
 
-// Splits a convex component along the diagonal from vertex 0 to the middle vertex, when both
-// halves have an area.
+// Splits a convex component along a diagonal from a vertex to the one halfway round, when both
+// halves have an area. The diagonal starts at a vertex whose turn is too small to measure, if
+// there is one: that vertex is what no hull of the component could keep (hull_meets_limits wants
+// every turn positive), and a half whose ends it is no longer turns there. Otherwise, or when
+// those halves have no area, from vertex 0, then from the others in order (a random polygon's
+// three nearly collinear vertices at 0..2 left the first half without area, and the piece
+// unplaced: an internal error on valid input).
 std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon) {
-  if (polygon.size() < 4) return std::nullopt;
-  std::size_t middle = polygon.size() / 2;
-  Ring first(polygon.begin(), polygon.begin() + static_cast<std::ptrdiff_t>(middle) + 1);
-  Ring second(polygon.begin() + static_cast<std::ptrdiff_t>(middle), polygon.end());
-  second.push_back(polygon.front());
-  if (!(signed_area(first) > 0) || !(signed_area(second) > 0)) return std::nullopt;
-  return std::pair{std::move(first), std::move(second)};
+  const std::size_t n = polygon.size();
+  if (n < 4) return std::nullopt;
+  auto halves_from = [&](std::size_t start) -> std::optional<std::pair<Ring, Ring>> {
+    const std::size_t middle = start + n / 2;
+    Ring first, second;
+    for (std::size_t k = start; k <= middle; ++k) first.push_back(polygon[k % n]);
+    for (std::size_t k = middle; k <= start + n; ++k) second.push_back(polygon[k % n]);
+    if (!(signed_area(first) > 0) || !(signed_area(second) > 0)) return std::nullopt;
+    return std::pair{std::move(first), std::move(second)};
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (turn_height(polygon, i) > 0) continue;
+    if (auto halves = halves_from(i)) return halves;
+  }
+  for (std::size_t start = 0; start < n; ++start) {
+    if (auto halves = halves_from(start)) return halves;
+  }
+  return std::nullopt;
 }
 
 // A vertex's position, as a key for the depths it was allowed before a merge.

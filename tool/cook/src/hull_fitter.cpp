@@ -111,7 +111,10 @@ std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& lim
   auto want = [&](std::size_t edge) { wanted[edge % n] = 1; };
   double collinear = kCollinearFractionOfWeld * limits.weld;
   for (std::size_t i = 0; i < n; ++i) {
-    if (turn_height(hull, i) < collinear) {
+    // A turn too small to measure (0 or -0 where the exact turn is a left one) breaks the limits
+    // whatever the weld, so it is mended at weld 0 too.
+    const double height = turn_height(hull, i);
+    if (height < collinear || !(height > 0)) {
       want(i + n - 1);
       want(i);
     }

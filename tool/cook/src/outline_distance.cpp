@@ -48,10 +48,17 @@ Interval intersect(Interval a, Interval b) {
 // {t : |p + t v - centre| <= radius}.
 Interval disc_interval(Vec2 p, Vec2 v, Vec2 centre, double radius) {
   Vec2 offset = p - centre;
-  double a = glm::dot(v, v), b = glm::dot(v, offset),
-         c = glm::dot(offset, offset) - radius * radius;
-  if (a == 0) return c <= 0 ? Interval{-kInfinity, kInfinity} : Interval{};
-  double discriminant = b * b - a * c;
+  double a = glm::dot(v, v), b = glm::dot(v, offset);
+  if (a == 0) {
+    return glm::dot(offset, offset) <= radius * radius ? Interval{-kInfinity, kInfinity}
+                                                       : Interval{};
+  }
+  // b² - a (|offset|² - radius²), written as a radius² - (v × offset)²: the first form cancels
+  // catastrophically where the line passes through a disc far smaller than |v| (a hull edge
+  // along two nearly collinear outline edges, through their shared vertex), and came out
+  // negative there: segment_within then found a gap in the capsules at that vertex.
+  const double off_line = cross(v, offset);
+  double discriminant = a * radius * radius - off_line * off_line;
   if (discriminant < 0) return {};
   double root = std::sqrt(discriminant);
   return {(-b - root) / a, (-b + root) / a};
