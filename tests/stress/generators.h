@@ -1,6 +1,8 @@
 // Seeded generators of polygons with holes for the stress tests (issue 16): the shapes of
 // tilesets, frames and UI art on which hole resolution gave up, each family drawn from one 64-bit
-// seed, then placed (scaled, rotated, offset, rounded to a grid) and validated as input.
+// seed, then placed (scaled, rotated, offset, rounded to a grid) and validated as input. One
+// family (random_simple) draws hole-free random polygons instead, whose decimal coordinates put
+// vertices almost on the lines of their neighbours.
 #pragma once
 
 #include "hullcook/core/polygon.h"
@@ -20,6 +22,8 @@ enum class Family {
   ring,       // a ring (outer and hole: circles or squares, eccentric or not), maybe a disc inside
   star,       // a random star with random holes (polygons and small stars)
   button,     // a UI button whose few holes nearly fill it (walls 0.2-1.5, notched holes)
+  random_simple,  // random points untangled into a simple polygon, on a decimal grid, with
+                  // vertices inserted along edges: nearly collinear in binary; no holes
 };
 
 const std::vector<Family>& all_families();

@@ -152,23 +152,26 @@ void print_tally(const std::string& family, const Tally& tally) {
 std::vector<CookCase> image_cooks(const Options& options) {
   std::vector<CookCase> cooks;
   for (Measure measure : options.measures_given ? options.measures : std::vector{Measure::h1}) {
-    for (CookCase cook : {CookCase{1.0, 1.0}, CookCase{4.0, 1.0}, CookCase{1.0, 100.0}}) {
-      cook.measure = measure;
+    for (const auto& [tau_px, pixels_per_unit] : {std::pair{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}}) {
+      CookCase cook;
+      cook.tau_px = tau_px, cook.pixels_per_unit = pixels_per_unit, cook.measure = measure;
       cooks.push_back(cook);
     }
   }
   return cooks;
 }
 
-// Decomposes regions under every measure and tau, and cooks file at every tau above 0 (engine
-// limits cannot keep a tolerance of 0).
+// Decomposes regions under every measure and tau, and cooks file at every tau: at tau 0 with
+// weld 0 (no engine hull keeps vertices a weld apart at a tolerance of 0; the pieces are convex
+// and every vertex stays, however close).
 template <typename Decompose, typename Cook>
 void run_polygon(Tally& tally, const Options& options, Decompose decompose, Cook cook,
                  bool& failed) {
   for (Measure measure : options.measures) {
     for (double tau : options.taus) {
       record(tally, decompose(measure, tau), options, failed);
-      if (tau > 0) record(tally, cook(CookCase{tau, 1.0, measure}), options, failed);
+      const std::optional<double> weld = tau > 0 ? std::nullopt : std::optional<double>(0.0);
+      record(tally, cook(CookCase{tau, 1.0, measure, weld}), options, failed);
     }
   }
 }
@@ -263,7 +266,8 @@ int run(const Options& options) {
   std::printf(", tau");
   for (double tau : options.taus) std::printf(" %g", tau);
   std::printf(
-      "; polygons also cooked at each tau > 0; images cooked at tau 1 and 4 px and at tau 1 px "
+      "; polygons also cooked at each tau (weld 0 at tau 0); images cooked at tau 1 and 4 px and "
+      "at tau 1 px "
       "with 100 px per unit\n");
   for (const std::string& name : order) print_tally(name, tallies[name]);
   const double seconds =

@@ -35,7 +35,7 @@ std::string number(double value) {
 std::string cook_replay(const std::filesystem::path& input, const CookCase& settings) {
   return "hullcook cook " + input.string() + " --tau " + number(settings.tau_px) + " --ppu " +
          number(settings.pixels_per_unit) + " --measure " + measure_name(settings.measure) +
-         " -o cooked.json";
+         (settings.weld ? " --weld " + number(*settings.weld) : std::string()) + " -o cooked.json";
 }
 
 std::string cook_label(const std::string& name, const CookCase& settings) {
@@ -49,6 +49,7 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
   cook_settings.tau = Tolerance{settings.tau_px, false};
   cook_settings.pixels_per_unit = settings.pixels_per_unit;
   cook_settings.measure = measure_name(settings.measure);
+  cook_settings.weld = settings.weld;
   cook_settings.threads = 1;
   auto start = Clock::now();
   try {

@@ -11,6 +11,7 @@
 #include "hullcook/core/decompose.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace hullcook::stress {
@@ -46,6 +47,7 @@ struct CookCase {
   double tau_px = 1.0;  // --tau, in input units (pixels for images)
   double pixels_per_unit = 1.0;
   Measure measure = Measure::h1;
+  std::optional<double> weld;  // --weld; default kDefaultWeld
 };
 
 // Writes the case's regions as failure_dir/FAMILY-SEED.poly, cooks that file (with the engine

@@ -64,9 +64,12 @@ const std::filesystem::path kFailures =
 
 constexpr Measure kMeasures[] = {Measure::sl, Measure::sp, Measure::h1, Measure::h2};
 constexpr double kTaus[] = {0.0, 0.5, 1.0, 4.0};
-constexpr CookCase kCooks[] = {{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}};
-// Polygons are also cooked (engine limits included) at these tolerances, one measure per seed.
-constexpr double kCookTaus[] = {0.5, 1.0, 4.0};
+constexpr CookCase kCooks[] = {{1.0, 1.0, Measure::h1, std::nullopt},
+                               {4.0, 1.0, Measure::h1, std::nullopt},
+                               {1.0, 100.0, Measure::h1, std::nullopt}};
+// Polygons are also cooked (engine limits included) at these tolerances, one measure per seed;
+// at 0 with weld 0 (at a tolerance of 0 the pieces are convex, and no hull may weld vertices).
+constexpr double kCookTaus[] = {0.0, 0.5, 1.0, 4.0};
 constexpr Measure kCookMeasures[] = {Measure::h1, Measure::sl, Measure::sp};
 
 // Reports a failed outcome (the first few in full) and counts it.
@@ -187,7 +190,8 @@ TEST_P(PolygonFamily, EveryDecompositionAndCookPassesTheIndependentCheck) {
       for (double tau : kTaus) log.add(run_polygon_case(generated, measure, tau, kFailures));
     }
     for (double tau : kCookTaus) {
-      const CookCase cook{tau, 1.0, kCookMeasures[seed % std::size(kCookMeasures)]};
+      const CookCase cook{tau, 1.0, kCookMeasures[seed % std::size(kCookMeasures)],
+                          tau > 0 ? std::nullopt : std::optional<double>(0.0)};
       log.add(run_polygon_cook_case(generated, cook, kFailures));
     }
   }
@@ -221,7 +225,7 @@ INSTANTIATE_TEST_SUITE_P(Stress, ImageFamilies, ::testing::ValuesIn(all_image_fa
 TEST(Issue16Regressions, AWeldGrownHullMayReachOverItsNeighbours) {
   FailureLog log;
   const DrawnImage image = draw_image(ImageFamily::one_pixel_walls, 9074);
-  log.add(run_image_case(image, CookCase{1.0, 100.0, Measure::h1}, kFailures));
+  log.add(run_image_case(image, CookCase{1.0, 100.0, Measure::h1, std::nullopt}, kFailures));
 }
 
 class SampleSprites : public ::testing::TestWithParam<CookCase> {};
