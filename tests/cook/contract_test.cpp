@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <string>
 
 namespace hullcook {
@@ -498,6 +499,50 @@ TEST(Contract, RandomPolygonWithNearlyCollinearVerticesCooksAtTauZero) {
     EXPECT_GT(asset.pieces.size(), 10u);
     const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, weld});
     EXPECT_TRUE(violations.empty()) << "weld " << weld << listed(violations);
+  }
+  std::filesystem::remove(file);
+}
+
+// A unit square whose sides carry 300 vertices each, every coordinate moved by up to 1e-7
+// (seeded): at τ 0 the pieces along the sides are convex and some 1e-8 thin. At --max-verts 3
+// they must be cut into triangles, and halving from vertex 0 left slivers, which the contract
+// caught as an internal error (exit 4). Halving now looks for halves that are no slivers; a
+// piece that has none is the input's (its vertices lie too near a line for their precision): an
+// InputError that says what to raise. At --max-verts 8 the same input cooks within the contract.
+TEST(Contract, SidesOfNearlyCollinearVerticesCutIntoTrianglesAreAnInputError) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "hullcook_contract_bumpy_square.poly";
+  {
+    std::mt19937_64 random(1);
+    auto jitter = [&] { return (double(random() >> 11) * 0x1.0p-53 * 2 - 1) * 1e-7; };
+    const Vec2 corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::ofstream out(file);
+    out.precision(17);
+    out << "1\n1200 out\n";
+    for (int side = 0; side < 4; ++side) {
+      const Vec2 a = corners[side], b = corners[(side + 1) % 4];
+      for (int i = 0; i < 300; ++i) {
+        const Vec2 p = a + (b - a) * (double(i) / 300);
+        const double x = p.x + jitter();
+        out << x << " " << p.y + jitter() << "\n";
+      }
+    }
+    for (int i = 1; i <= 1200; ++i) out << i << (i < 1200 ? " " : "\n");
+  }
+  Settings settings;
+  settings.tau = Tolerance{0.0, false};
+  settings.weld = 0.0;
+  CookedAsset asset;
+  ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0));
+  const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, 0.0});
+  EXPECT_TRUE(violations.empty()) << listed(violations);
+  settings.max_verts = 3;
+  try {
+    cook({file}, settings);
+    ADD_FAILURE() << "cooked into triangles";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("raise --max-verts or --tau"), std::string::npos)
+        << error.what();
   }
   std::filesystem::remove(file);
 }

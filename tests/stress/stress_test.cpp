@@ -228,6 +228,22 @@ TEST(Issue16Regressions, AWeldGrownHullMayReachOverItsNeighbours) {
   log.add(run_image_case(image, CookCase{1.0, 100.0, Measure::h1, std::nullopt}, kFailures));
 }
 
+// scripts/stress 1200 --seed 20261207, the first run that cooked polygons at tau 0 (weld 0):
+// convex pieces of a thin wall and of grids that the engine limits halved from vertex 0 into a
+// sliver (area 1.3e-15 over a length of 6.2), an internal error. Halving now avoids slivers.
+TEST(TauZeroRegressions, ConvexPiecesAreHalvedWithoutSlivers) {
+  FailureLog log;
+  for (const auto& [family, seed] : {std::pair{Family::thin_wall, 20261367},
+                                     {Family::grid, 20261252},
+                                     {Family::grid, 20261318}}) {
+    const GeneratedCase generated = generate_case(family, std::uint64_t(seed));
+    ASSERT_TRUE(generated.rejection.empty()) << generated.rejection;
+    for (Measure measure : {Measure::sl, Measure::h1}) {
+      log.add(run_polygon_cook_case(generated, CookCase{0.0, 1.0, measure, 0.0}, kFailures));
+    }
+  }
+}
+
 class SampleSprites : public ::testing::TestWithParam<CookCase> {};
 
 TEST_P(SampleSprites, EveryCookedSpritePassesTheIndependentCheck) {

@@ -6,6 +6,7 @@
 #include "piece_merge.h"
 #include "small_hull.h"
 
+#include "hullcook/cook/contract.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 
@@ -69,14 +70,17 @@ bool is_convex_without_holes(const CookedPiece& piece) {
   return hull_area - component_area <= 1e-12 * std::max(1.0, hull_area);
 }
 
-// Splits a convex component along a diagonal from a vertex to the one halfway round, when both
-// halves have an area. The diagonal starts at a vertex whose turn is too small to measure, if
-// there is one: that vertex is what no hull of the component could keep (hull_meets_limits wants
-// every turn positive), and a half whose ends it is no longer turns there. Otherwise, or when
-// those halves have no area, from vertex 0, then from the others in order (a random polygon's
-// three nearly collinear vertices at 0..2 left the first half without area, and the piece
-// unplaced: an internal error on valid input).
-std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon) {
+// Splits a convex component along a diagonal from a vertex to the one halfway round, into halves
+// with an area that the contract does not call slivers (at its slack for rounding). The
+// diagonal starts at a vertex whose turn is too small to measure, if there is one: that vertex is
+// what no hull of the component could keep (hull_meets_limits wants every turn positive), and a
+// half whose ends it is no longer turns there. Otherwise, or when those halves do not do, from
+// vertex 0, then from the others in order: a random polygon's three nearly collinear vertices at
+// 0..2 left the first half without area, and a 1000-vertex star 1e-6 wide at --max-verts 3 was
+// halved into slivers, both internal errors on valid input. Sets *only_slivers when some halves
+// had an area but every such pair held a sliver.
+std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon, double slack,
+                                                  bool* only_slivers) {
   const std::size_t n = polygon.size();
   if (n < 4) return std::nullopt;
   auto halves_from = [&](std::size_t start) -> std::optional<std::pair<Ring, Ring>> {
@@ -85,6 +89,11 @@ std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon) {
     for (std::size_t k = start; k <= middle; ++k) first.push_back(polygon[k % n]);
     for (std::size_t k = middle; k <= start + n; ++k) second.push_back(polygon[k % n]);
     if (!(signed_area(first) > 0) || !(signed_area(second) > 0)) return std::nullopt;
+    if (is_contract_sliver(Region{first, {}}, slack) ||
+        is_contract_sliver(Region{second, {}}, slack)) {
+      *only_slivers = true;
+      return std::nullopt;
+    }
     return std::pair{std::move(first), std::move(second)};
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -102,8 +111,9 @@ using VertexKey = std::pair<double, double>;
 
 class Constrainer {
  public:
-  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split)
-      : tau_(tau), limits_(limits), split_(split) {}
+  // slack: the contract's slack for rounding (contract_slack of the pieces' outer rings).
+  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split, double slack)
+      : tau_(tau), limits_(limits), split_(split), slack_(slack) {}
 
   // Places every piece, on up to threads threads: each piece's slots are its own (they depend
   // on it alone) and are joined in the pieces' order, whatever the thread count.
@@ -144,7 +154,8 @@ class Constrainer {
     CookedPiece piece;  // its hull: the decomposition's
     Ring hull;          // the engine-ready hull once placed
     bool placed = false;
-    bool merged = false;  // merged into another slot
+    bool merged = false;               // merged into another slot
+    bool splits_into_slivers = false;  // every halving of its convex component left a sliver
   };
 
   // Appends to out the slots of piece: one, or those of its parts when it is split.
@@ -167,6 +178,7 @@ class Constrainer {
       return;
     }
     // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
+    bool splits_into_slivers = false;
     if (!is_small(piece)) {
       // Finer decompositions leave more room for growth; at τ = 0 the pieces are convex.
       static constexpr double kSplitFractions[] = {0.5, 0.125, 0.0};
@@ -181,7 +193,7 @@ class Constrainer {
         }
       }
       if (is_convex_without_holes(piece)) {
-        if (auto halves = halve_convex(piece.component.outer)) {
+        if (auto halves = halve_convex(piece.component.outer, slack_, &splits_into_slivers)) {
           for (Ring* half : {&halves->first, &halves->second}) {
             Ring hull = convex_hull(*half);
             add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0, piece.region}, 3,
@@ -192,7 +204,7 @@ class Constrainer {
       }
     }
     Ring hull = piece.hull;
-    out.push_back({std::move(piece), std::move(hull), false});
+    out.push_back({std::move(piece), std::move(hull), false, false, splits_into_slivers});
   }
 
  private:
@@ -320,6 +332,14 @@ class Constrainer {
     message << source << ": a piece of " << region_area(slot.piece.component)
             << " square units near (" << 0.5 * (box.low.x + box.high.x) << ", "
             << 0.5 * (box.low.y + box.high.y) << ")";
+    if (slot.splits_into_slivers) {
+      // Its vertices lie so near a line that every split is thinner than the contract's
+      // rounding (a side of 1e-7 bumps cut into triangles at --max-verts 3).
+      message << " cannot be split into hulls of at most " << limits_.max_verts
+              << " vertices: every split leaves a sliver (thinner than the rounding of its "
+                 "coordinates); raise --max-verts or --tau";
+      throw InputError(message.str());
+    }
     if (!is_small(slot.piece)) {
       message << " with " << slot.piece.component.holes.size()
               << " holes could not be split into pieces that fit the engine limits";
@@ -335,6 +355,7 @@ class Constrainer {
   double tau_;
   EngineLimits limits_;
   const SplitComponent& split_;
+  double slack_;
   std::vector<Slot> slots_;
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
 };
@@ -365,7 +386,10 @@ std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, do
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
                                              unsigned threads) {
-  Constrainer constrainer(tau, limits, split);
+  std::vector<const Ring*> rings;
+  rings.reserve(pieces.size());
+  for (const CookedPiece& piece : pieces) rings.push_back(&piece.component.outer);
+  Constrainer constrainer(tau, limits, split, contract_slack(rings));
   constrainer.add_all(std::move(pieces), threads);
   return constrainer.finish(source);
 }

@@ -38,31 +38,27 @@ double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
 // The rounding slack of every length compared (see contract.h).
 double rounding_slack(const std::vector<Region>& outline) {
-  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
-  double largest = 0.0;
-  for (const Region& region : outline) {
-    for (Vec2 p : region.outer) {
-      low = glm::min(low, p), high = glm::max(high, p);
-      largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-    }
-  }
-  const double extent = std::max(high.x - low.x, high.y - low.y);
-  return 1e-9 * std::max(extent, 1e-3 * largest);
+  std::vector<const Ring*> rings;
+  rings.reserve(outline.size());
+  for (const Region& region : outline) rings.push_back(&region.outer);
+  return contract_slack(rings);
 }
 
 // --- The components: valid regions, no slivers. --------------------------------------------
 
 // A sliver: zero area but for rounding, thinner than a billionth of its length. Described as
 // "area A over a length of L".
+double length_of(const Ring& ring) {
+  if (ring.empty()) return 0.0;
+  Vec2 low = ring.front(), high = low;
+  for (Vec2 p : ring) low = glm::min(low, p), high = glm::max(high, p);
+  return std::hypot(high.x - low.x, high.y - low.y);
+}
+
 std::optional<std::string> sliver_defect(const Region& region, double slack) {
-  Vec2 low = region.outer.front(), high = low;
-  for (Vec2 p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
-  const double length = std::hypot(high.x - low.x, high.y - low.y);
-  const double area = region_area(region);
-  if (area <= length * std::max(1e-9 * length, slack)) {
-    return "area " + number(area) + " over a length of " + number(length);
-  }
-  return std::nullopt;
+  if (!is_contract_sliver(region, slack)) return std::nullopt;
+  return "area " + number(region_area(region)) + " over a length of " +
+         number(length_of(region.outer));
 }
 
 // A wall between two rings of a region (a hole and the outer ring, or two holes) no thicker than
@@ -857,6 +853,25 @@ void enforce_contract(const std::string& source, const std::vector<std::string>&
       source + ": internal error: the output breaks its contract: " + violations.front();
   if (violations.size() > 1) message += " (and " + std::to_string(violations.size() - 1) + " more)";
   throw ContractError(message);
+}
+
+double contract_slack(const std::vector<const Ring*>& rings) {
+  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
+  double largest = 0.0;
+  for (const Ring* ring : rings) {
+    for (Vec2 p : *ring) {
+      low = glm::min(low, p), high = glm::max(high, p);
+      largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    }
+  }
+  const double extent = std::max(high.x - low.x, high.y - low.y);
+  return 1e-9 * std::max(extent, 1e-3 * largest);
+}
+
+bool is_contract_sliver(const Region& region, double slack) {
+  if (region.outer.empty()) return true;
+  const double length = length_of(region.outer);
+  return region_area(region) <= length * std::max(1e-9 * length, slack);
 }
 
 }  // namespace hullcook

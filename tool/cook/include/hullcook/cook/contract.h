@@ -53,6 +53,15 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
                            std::size_t first_region_number = 1, unsigned threads = 1);
 
+// The slack for rounding that the contract compares lengths with: 1e-9 of the extent of the
+// rings' points, or of a thousandth of their largest coordinate when that is more. The rings are
+// an outline's outer rings, or all of its pieces' (which span the same box).
+double contract_slack(const std::vector<const Ring*>& rings);
+
+// Whether the contract calls region a sliver at that slack: its area no more than its length (the
+// diagonal of its outer ring's bounding box) times the larger of 1e-9 of that length and slack.
+bool is_contract_sliver(const Region& region, double slack);
+
 // Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
 // more)" when there are violations.
 void enforce_contract(const std::string& source, const std::vector<std::string>& violations);
