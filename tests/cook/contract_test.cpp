@@ -429,14 +429,29 @@ TEST(Contract, PiecesSmallerThanTheInputFloorKeepTheContract) {
   EXPECT_TRUE(violations.empty()) << listed(violations);
 }
 
+// Cooks the .poly text at τ (input units) and weld, and expects the asset within the contract.
+void expect_cooked_within_contract(const std::string& poly, const std::string& name, double tau,
+                                   double weld) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("hullcook_contract_" + name + ".poly");
+  std::ofstream(file) << poly;
+  Settings settings;
+  settings.tau = Tolerance{tau, false};
+  settings.weld = weld;
+  CookedAsset asset;
+  EXPECT_NO_THROW(asset = cook({file}, settings).assets.at(0)) << name << " tau " << tau;
+  std::filesystem::remove(file);
+  const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, weld});
+  EXPECT_TRUE(violations.empty()) << name << " tau " << tau << " weld " << weld
+                                  << listed(violations);
+}
+
 // A seeded random simple polygon (the stress family random_simple, on a 0.01 grid) with three
 // vertices collinear in decimal, not quite in binary, cooked whole at τ 0. With the default weld
 // the cook's own check reported a hull edge along them "9.9e-10 beyond the outline" (exit 4);
 // with weld 0 one of its pieces could be placed under no engine hull (exit 4). Both are valid.
 TEST(Contract, RandomPolygonWithNearlyCollinearVerticesCooksAtTauZero) {
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / "hullcook_contract_nearly_collinear.poly";
-  std::ofstream(file) << R"(1
+  const std::string poly = R"(1
 50 out
 1.0 0.53
 0.95 0.53
@@ -491,16 +506,8 @@ TEST(Contract, RandomPolygonWithNearlyCollinearVerticesCooksAtTauZero) {
 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40 41 42 43 44 45 46 47 48 49 50
 )";
   for (const double weld : {kDefaultWeld, 0.0}) {
-    Settings settings;
-    settings.tau = Tolerance{0.0, false};
-    settings.weld = weld;
-    CookedAsset asset;
-    ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0)) << "weld " << weld;
-    EXPECT_GT(asset.pieces.size(), 10u);
-    const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, weld});
-    EXPECT_TRUE(violations.empty()) << "weld " << weld << listed(violations);
+    expect_cooked_within_contract(poly, "nearly_collinear", 0.0, weld);
   }
-  std::filesystem::remove(file);
 }
 
 // A unit square whose sides carry 300 vertices each, every coordinate moved by up to 1e-7
@@ -545,6 +552,98 @@ TEST(Contract, SidesOfNearlyCollinearVerticesCutIntoTrianglesAreAnInputError) {
         << error.what();
   }
   std::filesystem::remove(file);
+}
+
+// A random outline 1e-4 wide, 1e5 from the origin, with seven small holes: the contract's slack
+// (1e-9 of a thousandth of the largest coordinate, 1e-7) is a thousandth of its width. At τ 0
+// the decomposition had no cut but one leaving a triangle between two holes and the outer
+// boundary 2.7e-8 thick, a sliver at that slack: an internal error (exit 4). The engine limits
+// now merge such a sliver into a neighbour (here at τ 0 too), or refuse it as input.
+TEST(Contract, SliverThatNoCutAvoidedIsMergedIntoANeighbour) {
+  const std::string poly = R"(8
+12 out
+100000.00008110295 100000.00007496438
+100000.00007366456 100000.00008183361
+100000.00004714684 100000.000093445
+100000.00004735531 100000.00008793238
+100000.00004595026 100000.0000858337
+100000.00004068734 100000.0000868807
+100000.00002984694 100000.00008813952
+100000.00001797098 100000.00007531999
+100000.0000041178 100000.00004668134
+100000.00000334255 100000.00004396691
+100000.00005896871 100000.00000977106
+100000.00008648308 100000.00004927025
+1 2 3 4 5 6 7 8 9 10 11 12
+7 in
+100000.00006927553 100000.0000461011
+100000.00006686806 100000.00004364627
+100000.00006344776 100000.00004399795
+100000.00006159021 100000.0000468913
+100000.00006269416 100000.00005014759
+100000.00006592833 100000.00005131474
+100000.0000688573 100000.00004951388
+1 2 3 4 5 6 7
+6 in
+100000.00003932431 100000.00005481571
+100000.00003609694 100000.00005165671
+100000.00003174748 100000.0000528722
+100000.0000306254 100000.00005724668
+100000.00003385276 100000.00006040568
+100000.00003820223 100000.0000591902
+1 2 3 4 5 6
+5 in
+100000.00003680802 100000.00003415401
+100000.00003117374 100000.00003233578
+100000.0000277034 100000.00003713244
+100000.0000311929 100000.00004191518
+100000.00003681987 100000.0000400744
+1 2 3 4 5
+4 in
+100000.00005989693 100000.00002680268
+100000.0000575325 100000.00002744491
+100000.00005817473 100000.00002980935
+100000.00006053917 100000.00002916712
+1 2 3 4
+4 in
+100000.00004991134 100000.00004007536
+100000.00004296625 100000.00004666994
+100000.00004956083 100000.00005361505
+100000.00005650593 100000.00004702047
+1 2 3 4
+13 in
+100000.00003500684 100000.00004741628
+100000.00003506952 100000.0000466878
+100000.00003478648 100000.00004601362
+100000.00003422257 100000.00004554822
+100000.00003350695 100000.00004539818
+100000.00003280358 100000.00004559789
+100000.00003227359 100000.0000461016
+100000.0000320384 100000.00004679391
+100000.00003215186 100000.00004751622
+100000.00003258801 100000.00004810306
+100000.00003324694 100000.00004842
+100000.00003397766 100000.00004839442
+100000.00003461279 100000.00004803218
+1 2 3 4 5 6 7 8 9 10 11 12 13
+12 in
+100000.00007362655 100000.00003482902
+100000.00007313468 100000.00003281671
+100000.00007170255 100000.00003131994
+100000.0000697139 100000.00003073976
+100000.00006770159 100000.00003123163
+100000.00006620483 100000.00003266375
+100000.00006562464 100000.0000346524
+100000.00006611651 100000.0000366647
+100000.00006754864 100000.00003816148
+100000.00006953729 100000.00003874165
+100000.0000715496 100000.00003824978
+100000.00007304637 100000.00003681766
+1 2 3 4 5 6 7 8 9 10 11 12
+)";
+  for (const double tau : {0.0, 0.0000005}) {
+    expect_cooked_within_contract(poly, "far_small_holes", tau, 0.0);
+  }
 }
 
 }  // namespace

@@ -137,7 +137,8 @@ class Constrainer {
     }
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       if (slots_[k].placed || slots_[k].merged) continue;
-      if (!grow(k)) throw_unplaceable(slots_[k], source);
+      // A grown hull would still hold a sliver.
+      if (slots_[k].is_sliver || !grow(k)) throw_unplaceable(slots_[k], source);
     }
     std::vector<CookedPiece> pieces;
     pieces.reserve(slots_.size());
@@ -156,10 +157,19 @@ class Constrainer {
     bool placed = false;
     bool merged = false;               // merged into another slot
     bool splits_into_slivers = false;  // every halving of its convex component left a sliver
+    bool is_sliver = false;            // its component is a sliver: merged, or refused
   };
 
   // Appends to out the slots of piece: one, or those of its parts when it is split.
   void add(CookedPiece piece, int depth, std::vector<Slot>& out) const {
+    // A sliver at the contract's rounding, which the decomposition takes only when no other cut
+    // is valid (between nearly collinear vertices of different rings, in an outline whose slack
+    // is coarse beside its size: 1e-4 wide 1e5 from the origin), is merged into a neighbour.
+    if (is_contract_sliver(piece.component, slack_)) {
+      Ring hull = piece.hull;
+      out.push_back({std::move(piece), std::move(hull), false, false, false, true});
+      return;
+    }
     // Most hulls meet the limits as the decomposition gives them.
     if (hull_meets_limits(piece.hull, limits_)) {
       Ring hull = piece.hull;
@@ -332,6 +342,12 @@ class Constrainer {
     message << source << ": a piece of " << region_area(slot.piece.component)
             << " square units near (" << 0.5 * (box.low.x + box.high.x) << ", "
             << 0.5 * (box.low.y + box.high.y) << ")";
+    if (slot.is_sliver) {
+      message << " is a sliver (thinner than the rounding of its coordinates) that no cut "
+                 "avoided and no neighbour could take within tau = "
+              << tau_ << "; raise --tau, or move the input nearer the origin";
+      throw InputError(message.str());
+    }
     if (slot.splits_into_slivers) {
       // Its vertices lie so near a line that every split is thinner than the contract's
       // rounding (a side of 1e-7 bumps cut into triangles at --max-verts 3).
