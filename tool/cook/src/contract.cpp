@@ -46,8 +46,7 @@ double rounding_slack(const std::vector<Region>& outline) {
 
 // --- The components: valid regions, no slivers. --------------------------------------------
 
-// A sliver: zero area but for rounding, thinner than a billionth of its length. Described as
-// "area A over a length of L".
+// The diagonal of the ring's bounding box: a piece's length, to the sliver test.
 double length_of(const Ring& ring) {
   if (ring.empty()) return 0.0;
   Vec2 low = ring.front(), high = low;
@@ -55,6 +54,8 @@ double length_of(const Ring& ring) {
   return std::hypot(high.x - low.x, high.y - low.y);
 }
 
+// A sliver: zero area but for rounding, thinner than a billionth of its length. Described as
+// "area A over a length of L".
 std::optional<std::string> sliver_defect(const Region& region, double slack) {
   if (!is_contract_sliver(region, slack)) return std::nullopt;
   return "area " + number(region_area(region)) + " over a length of " +
