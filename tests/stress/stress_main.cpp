@@ -161,17 +161,14 @@ std::vector<CookCase> image_cooks(const Options& options) {
   return cooks;
 }
 
-// Decomposes regions under every measure and tau, and cooks file at every tau: at tau 0 with
-// weld 0 (no engine hull keeps vertices a weld apart at a tolerance of 0; the pieces are convex
-// and every vertex stays, however close).
+// Decomposes regions under every measure and tau, and cooks file at every tau (polygon_cook).
 template <typename Decompose, typename Cook>
 void run_polygon(Tally& tally, const Options& options, Decompose decompose, Cook cook,
                  bool& failed) {
   for (Measure measure : options.measures) {
     for (double tau : options.taus) {
       record(tally, decompose(measure, tau), options, failed);
-      const std::optional<double> weld = tau > 0 ? std::nullopt : std::optional<double>(0.0);
-      record(tally, cook(CookCase{tau, 1.0, measure, weld}), options, failed);
+      record(tally, cook(polygon_cook(tau, measure)), options, failed);
     }
   }
 }
@@ -267,8 +264,7 @@ int run(const Options& options) {
   for (double tau : options.taus) std::printf(" %g", tau);
   std::printf(
       "; polygons also cooked at each tau (weld 0 at tau 0); images cooked at tau 1 and 4 px and "
-      "at tau 1 px "
-      "with 100 px per unit\n");
+      "at tau 1 px with 100 px per unit\n");
   for (const std::string& name : order) print_tally(name, tallies[name]);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

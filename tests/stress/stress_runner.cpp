@@ -119,6 +119,10 @@ std::string CaseOutcome::message() const {
   return text.str();
 }
 
+CookCase polygon_cook(double tau, Measure measure) {
+  return {tau, 1.0, measure, tau > 0 ? std::nullopt : std::optional<double>(0.0)};
+}
+
 CaseOutcome run_polygon_case(const GeneratedCase& generated, Measure measure, double tau,
                              const std::filesystem::path& failure_dir) {
   const std::string family = family_name(generated.family);

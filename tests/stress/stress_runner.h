@@ -50,6 +50,10 @@ struct CookCase {
   std::optional<double> weld;  // --weld; default kDefaultWeld
 };
 
+// How polygons are cooked at tau: at tau 0 with weld 0 (no engine hull keeps vertices a weld
+// apart at a tolerance of 0; the pieces are convex and every vertex stays, however close).
+CookCase polygon_cook(double tau, Measure measure);
+
 // Writes the case's regions as failure_dir/FAMILY-SEED.poly, cooks that file (with the engine
 // limits, as `hullcook cook` does) and checks the cooked asset; the file is kept only when the
 // case fails.

@@ -67,8 +67,8 @@ constexpr double kTaus[] = {0.0, 0.5, 1.0, 4.0};
 constexpr CookCase kCooks[] = {{1.0, 1.0, Measure::h1, std::nullopt},
                                {4.0, 1.0, Measure::h1, std::nullopt},
                                {1.0, 100.0, Measure::h1, std::nullopt}};
-// Polygons are also cooked (engine limits included) at these tolerances, one measure per seed;
-// at 0 with weld 0 (at a tolerance of 0 the pieces are convex, and no hull may weld vertices).
+// Polygons are also cooked (engine limits included, see polygon_cook) at these tolerances, one
+// measure per seed.
 constexpr double kCookTaus[] = {0.0, 0.5, 1.0, 4.0};
 constexpr Measure kCookMeasures[] = {Measure::h1, Measure::sl, Measure::sp};
 
@@ -190,8 +190,7 @@ TEST_P(PolygonFamily, EveryDecompositionAndCookPassesTheIndependentCheck) {
       for (double tau : kTaus) log.add(run_polygon_case(generated, measure, tau, kFailures));
     }
     for (double tau : kCookTaus) {
-      const CookCase cook{tau, 1.0, kCookMeasures[seed % std::size(kCookMeasures)],
-                          tau > 0 ? std::nullopt : std::optional<double>(0.0)};
+      const CookCase cook = polygon_cook(tau, kCookMeasures[seed % std::size(kCookMeasures)]);
       log.add(run_polygon_cook_case(generated, cook, kFailures));
     }
   }
@@ -239,7 +238,7 @@ TEST(TauZeroRegressions, ConvexPiecesAreHalvedWithoutSlivers) {
     const GeneratedCase generated = generate_case(family, std::uint64_t(seed));
     ASSERT_TRUE(generated.rejection.empty()) << generated.rejection;
     for (Measure measure : {Measure::sl, Measure::h1}) {
-      log.add(run_polygon_cook_case(generated, CookCase{0.0, 1.0, measure, 0.0}, kFailures));
+      log.add(run_polygon_cook_case(generated, polygon_cook(0.0, measure), kFailures));
     }
   }
 }

@@ -85,16 +85,15 @@ std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon, double sl
   if (n < 4) return std::nullopt;
   auto halves_from = [&](std::size_t start) -> std::optional<std::pair<Ring, Ring>> {
     const std::size_t middle = start + n / 2;
-    Ring first, second;
-    for (std::size_t k = start; k <= middle; ++k) first.push_back(polygon[k % n]);
-    for (std::size_t k = middle; k <= start + n; ++k) second.push_back(polygon[k % n]);
-    if (!(signed_area(first) > 0) || !(signed_area(second) > 0)) return std::nullopt;
-    if (is_contract_sliver(Region{first, {}}, slack) ||
-        is_contract_sliver(Region{second, {}}, slack)) {
+    Region first, second;
+    for (std::size_t k = start; k <= middle; ++k) first.outer.push_back(polygon[k % n]);
+    for (std::size_t k = middle; k <= start + n; ++k) second.outer.push_back(polygon[k % n]);
+    if (!(signed_area(first.outer) > 0) || !(signed_area(second.outer) > 0)) return std::nullopt;
+    if (is_contract_sliver(first, slack) || is_contract_sliver(second, slack)) {
       *only_slivers = true;
       return std::nullopt;
     }
-    return std::pair{std::move(first), std::move(second)};
+    return std::pair{std::move(first.outer), std::move(second.outer)};
   };
   for (std::size_t i = 0; i < n; ++i) {
     if (turn_height(polygon, i) > 0) continue;
@@ -167,13 +166,13 @@ class Constrainer {
     // is coarse beside its size: 1e-4 wide 1e5 from the origin), is merged into a neighbour.
     if (is_contract_sliver(piece.component, slack_)) {
       Ring hull = piece.hull;
-      out.push_back({std::move(piece), std::move(hull), false, false, false, true});
+      out.push_back({.piece = std::move(piece), .hull = std::move(hull), .is_sliver = true});
       return;
     }
     // Most hulls meet the limits as the decomposition gives them.
     if (hull_meets_limits(piece.hull, limits_)) {
       Ring hull = piece.hull;
-      out.push_back({std::move(piece), std::move(hull), true});
+      out.push_back({.piece = std::move(piece), .hull = std::move(hull), .placed = true});
       return;
     }
     // A hull grows within τ of its own component: stricter than the outline, it keeps hulls on
@@ -184,7 +183,7 @@ class Constrainer {
     HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component, edges_suffice,
                       tau_, limits_);
     if (std::optional<Ring> hull = fitter.fit(piece.hull)) {
-      out.push_back({std::move(piece), std::move(*hull), true});
+      out.push_back({.piece = std::move(piece), .hull = std::move(*hull), .placed = true});
       return;
     }
     // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
@@ -214,7 +213,9 @@ class Constrainer {
       }
     }
     Ring hull = piece.hull;
-    out.push_back({std::move(piece), std::move(hull), false, false, splits_into_slivers});
+    out.push_back({.piece = std::move(piece),
+                   .hull = std::move(hull),
+                   .splits_into_slivers = splits_into_slivers});
   }
 
  private:
