@@ -295,6 +295,47 @@ TEST(Bundle, ReviewLargeHullsAreStoredWithALargerQuantum) {
   }
 }
 
+// Found by cooking random alpha gradients at --alpha 1 --tau 0.25 --simplify 0: the decomposer
+// left a triangle 2 px long and 0.0005 px high along the image's border beside hulls 54 px
+// across. Nearest rounding flattens it at every step until the wide hulls no longer fit 16-bit
+// deltas (exit 3); rounding its corners away from its centroid, each within the reported bound,
+// keeps it a triangle.
+TEST(Bundle, HullThinnerThanAQuantumBesideAWideOneIsStoredByRoundingOutward) {
+  // Four of its hulls: nearest rounding flattens one of the first three at each of the first five
+  // steps, and the last spans more than 65 535 quanta at the sixth.
+  const std::vector<Ring> hulls{
+      {{-15.5, -11.490909090909092}, {-14.5, -11.493333333333332}, {-13.5, -11.49468085106383}},
+      {{-60.500000000033396, 11.494680851063798},
+       {-53.49999999991997, 11.4956896551724},
+       {-56.07477830621257, 11.497085878113777},
+       {-58.687183881102634, 11.497129775236619}},
+      {{-33.5, -11.496710526315791},
+       {-31.25829674256659, -11.497642874161818},
+       {-29.5, -11.497340425531917}},
+      {{-16.63019004891027, -11.545409580987874},
+       {-7.937906891045302, -7.754882692543918},
+       {-7.428571428571434, -1.6428571428571612},
+       {-8.003982777179763, 3.535844994617869},
+       {-16.5, 11.48611111111111},
+       {-61.50000000000003, -11.494047619047635}}};
+  const std::vector<CookedAsset> assets{test::make_asset("gradient", {{0.25, hulls}})};
+  const std::string bytes = write_bundle(assets);
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  expect_round_trip(assets, bundle);
+  // Every stored vertex within the bound readers report of a vertex of its cooked hull.
+  const runtime::Asset asset = bundle.find("gradient");
+  for (std::size_t h = 0; h < assets[0].levels[0].hulls.size(); ++h) {
+    for (const Vec2& p : stored_ring(asset.level(0).hull(h))) {
+      double nearest = 1e300;
+      for (const Vec2& q : assets[0].levels[0].hulls[h])
+        nearest = std::min(nearest, std::hypot(p.x - q.x, p.y - q.y));
+      EXPECT_LE(nearest, asset.quantization_error() * (1 + 1e-6)) << "hull " << h;
+    }
+  }
+}
+
 TEST(Bundle, WriterRefusesWhatItCannotStore) {
   auto box = [](const std::string& name) {
     return test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}});

@@ -5,6 +5,8 @@
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -96,26 +98,62 @@ struct QuantizedAsset {
   throw OutputError("bundle: asset '" + asset.name + "': " + problem);
 }
 
-enum class Attempt { ok, too_coarse };
+enum class Attempt { ok, too_coarse, too_wide };
+
+// How a hull vertex meets the grid. nearest: the closest grid point. outward: of the corners of
+// the grid cell holding it that lie as close (step/√2, the error bound readers report), the one
+// farthest from the hull's vertex centroid. A hull thinner than a quantum rounds to a segment;
+// the finer steps that would keep it a polygon may no longer store the asset's largest hull in
+// 16-bit deltas, while pushing its sides apart may keep it one at the same step.
+enum class Rounding { nearest, outward };
+
+// The grid point for p at quantum; centroid only for outward.
+GridPoint round_to_grid(Vec2 p, double quantum, Rounding rounding, Vec2 centroid) {
+  if (rounding == Rounding::nearest)
+    return {static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
+            static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
+  const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
+  GridPoint best{static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
+                 static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
+  const Vec2 away = p - centroid;
+  double best_reach = glm::dot(Vec2{best.x * quantum, best.y * quantum} - p, away);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double gx = low_x + (corner & 1), gy = low_y + (corner >> 1);
+    const Vec2 moved{gx * quantum - p.x, gy * quantum - p.y};
+    if (glm::dot(moved, moved) > 0.5 * quantum * quantum) continue;
+    const double reach = glm::dot(moved, away);
+    if (reach > best_reach) {
+      best_reach = reach;
+      best = {static_cast<std::int64_t>(gx), static_cast<std::int64_t>(gy)};
+    }
+  }
+  return best;
+}
 
 // Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
-// the bound (a finer step fixes both).
+// the bound (a finer step may fix both), too_wide when it spans more than 16-bit deltas hold.
 Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, double bound,
-                      QuantizedHull& out) {
+                      Rounding rounding, QuantizedHull& out, double& extent) {
   const double quantum = step;
   // Scratch, reused: one hull after the other.
   thread_local std::vector<GridPoint> points, grid;
   points.clear();
+  Vec2 centroid{0.0, 0.0};
+  if (rounding == Rounding::outward) {
+    for (const Vec2& p : hull) centroid += p;
+    centroid /= static_cast<double>(hull.size());
+  }
   // The farthest a vertex moves [output units, squared], and the largest coordinate.
   double moved_squared = 0.0, size = 0.0;
   for (const Vec2& p : hull) {
-    const double qx = std::nearbyint(p.x / quantum), qy = std::nearbyint(p.y / quantum);
     // Keep |base| + 2^15 within int32.
-    if (std::fabs(qx) > 2.0e9 || std::fabs(qy) > 2.0e9)
+    if (std::fabs(p.x / quantum) > 2.0e9 || std::fabs(p.y / quantum) > 2.0e9)
       fail(asset, "a hull vertex is too far from the origin for the bundle's 32-bit grid");
-    points.push_back({static_cast<std::int64_t>(qx), static_cast<std::int64_t>(qy)});
+    const GridPoint q = round_to_grid(p, quantum, rounding, centroid);
+    points.push_back(q);
     // format::dequantize gives the grid point's value as qx * quantum exactly.
-    const double dx = qx * quantum - p.x, dy = qy * quantum - p.y;
+    const double dx = static_cast<double>(q.x) * quantum - p.x;
+    const double dy = static_cast<double>(q.y) * quantum - p.y;
     moved_squared = std::max(moved_squared, dx * dx + dy * dy);
     size = std::max({size, std::fabs(p.x), std::fabs(p.y)});
   }
@@ -129,11 +167,8 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   }
   constexpr std::int64_t kDeltaRange = 65535;  // int16 span
   if (max_x - min_x > kDeltaRange || max_y - min_y > kDeltaRange) {
-    const double extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
-    fail(asset, "a hull spans " + std::to_string(extent) +
-                    " output units, more than the 65535 quanta of 16-bit deltas at the required "
-                    "precision of " +
-                    std::to_string(bound) + " units; cook it with a larger tau");
+    extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
+    return Attempt::too_wide;
   }
   // Centre the base so that deltas fall in [-32768, 32767].
   const std::int64_t base_x = min_x + 32768, base_y = min_y + 32768;
@@ -200,21 +235,41 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
     fail(asset, "pixels per unit too small for the bundle's quantization grid (a step of " +
                     std::to_string(result.step) + " output units)");
   }
-  for (int attempt = 0; attempt < 24; ++attempt, result.step *= 0.5f) {
+  // At each step each hull is rounded to the nearest grid points, else outward (which may keep a
+  // hull thinner than a quantum a polygon); the step is halved until every hull is stored within
+  // the bound.
+  double too_wide_extent = 0.0;
+  const float first_step = result.step;
+  bool refined = false;  // whether the step that spanned too many quanta was halved
+  for (int attempt = 0; attempt < 24 && too_wide_extent == 0.0; ++attempt, result.step *= 0.5f) {
     if (!(result.step > 0.0f)) break;
     result.levels.assign(levels.size(), {});
-    bool ok = true;
-    for (std::size_t l = 0; l < levels.size() && ok; ++l) {
+    Attempt outcome = Attempt::ok;
+    for (std::size_t l = 0; l < levels.size() && outcome == Attempt::ok; ++l) {
       for (const Ring& hull : levels[l].hulls) {
         QuantizedHull quantized;
-        if (quantize_hull(asset, hull, result.step, bound, quantized) != Attempt::ok) {
-          ok = false;
-          break;
+        for (Rounding rounding : {Rounding::nearest, Rounding::outward}) {
+          outcome =
+              quantize_hull(asset, hull, result.step, bound, rounding, quantized, too_wide_extent);
+          if (outcome != Attempt::too_coarse) break;
         }
+        if (outcome != Attempt::ok) break;
         result.levels[l].push_back(std::move(quantized));
       }
     }
-    if (ok) return result;
+    if (outcome == Attempt::ok) return result;
+    if (outcome == Attempt::too_wide) refined = result.step < first_step;
+  }
+  if (too_wide_extent > 0.0) {
+    // The step is first halved for a hull that rounds to a segment, a sliver of the outline
+    // that simplifying it (--simplify) or a larger tau removes.
+    fail(asset, "a hull spans " + std::to_string(too_wide_extent) +
+                    " output units, more than the 65535 quanta of 16-bit deltas at the required "
+                    "precision of " +
+                    std::to_string(bound) + " units" +
+                    (refined ? " once the step is refined for a hull thinner than it; cook it with "
+                               "--simplify or a larger tau"
+                             : "; cook it with a larger tau"));
   }
   fail(asset, "a hull is too thin to be stored as a convex polygon within " +
                   std::to_string(bound) + " output units");
