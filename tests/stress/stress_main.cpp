@@ -38,13 +38,17 @@ struct Options {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
+  // The families from their lists, so that a new one is never missing here.
+  std::string polygons, images;
+  for (Family family : all_families()) polygons += std::string(family_name(family)) + " ";
+  for (ImageFamily family : all_image_families())
+    images += std::string(image_family_name(family)) + " ";
   std::fprintf(
       stderr,
       "%s\nusage: hullcook_stress [--cases N] [--images N] [--seed S] [--family F]... "
       "[--measure M]... [--tau T]... [--out DIR] [--show N] [--progress] [--input FILE]...\n"
-      "families: thin_wall grid row ring star button (polygons), tileset frame "
-      "ui_button one_pixel_walls grid_sheet mosaic (images)\n",
-      problem.c_str());
+      "families: %s(polygons), %s(images)\n",
+      problem.c_str(), polygons.c_str(), images.c_str());
   std::exit(1);
 }
 
