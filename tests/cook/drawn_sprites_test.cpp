@@ -3,7 +3,9 @@
 #include "drawn_sprites.h"
 #include "contract.h"
 
+#include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
+#include "hullcook/format/bundle_layout.h"
 
 #include <gtest/gtest.h>
 
@@ -54,6 +56,51 @@ TEST_P(DrawnSpriteContract, EveryDrawnSpriteKeepsTheContract) {
     }
     test::expect_cooked_contract(asset, asset.tau, limits);
   }
+}
+
+// Found by cooking random alpha gradients (here, the seventh of seed 5) at --alpha 1 --tau 0.25
+// --simplify 0: the soft alpha along the image's border traces a chain 0.01 px from straight,
+// and splitting a piece for --max-verts at τ 0 cut it into triangles 35 px long and 0.0006 px
+// high. Such a hull meets the engine limits but rounds to a segment on the bundle's grid, whose
+// writer refined its step until the wide hulls overflowed 16-bit deltas (exit 3). Hulls thinner
+// than the bundle's bound are now merged into neighbours.
+TEST_F(DrawnSpriteContract, SoftAlphaAlongTheImageBorderLeavesNoHullThinnerThanTheBundleGrid) {
+  test::DrawnSprite gradient("gradient.png", 110, 84);
+  for (int y = 0; y < gradient.height; ++y) {
+    for (int x = 0; x < gradient.width; ++x) {
+      const double value =
+          255 - 1.9463187031070772 * std::hypot(x - 14.202065331381586, y - 64.8602505337281) +
+          40 * std::sin(x * 0.7);
+      gradient.alpha[std::size_t(y) * gradient.width + x] =
+          static_cast<std::uint8_t>(std::clamp(static_cast<int>(value), 0, 255));
+    }
+  }
+  std::ofstream(directory / gradient.name, std::ios::binary) << gradient.png();
+  Settings settings;
+  settings.tau = Tolerance{0.25, false};
+  settings.alpha = 1;
+  settings.simplify = 0.0;
+  CookResult result = cook({directory / gradient.name}, settings);
+  ASSERT_EQ(result.assets.size(), 1u);
+  const CookedAsset& asset = result.assets[0];
+  test::expect_cooked_contract(asset, asset.tau, EngineLimits{settings.max_verts, kDefaultWeld});
+  const double bound = format::quantization_error_bound(asset.tau, asset.pixels_per_unit);
+  // A convex polygon's width: the least, over its edges, of its farthest vertex from the edge.
+  auto width = [](const Ring& hull) {
+    double least = INFINITY;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Vec2 from = hull[i], edge = hull[(i + 1) % hull.size()] - from;
+      double farthest = 0;
+      for (const Vec2& v : hull) {
+        farthest = std::max(farthest, (edge.x * (v.y - from.y) - edge.y * (v.x - from.x)) /
+                                          std::hypot(edge.x, edge.y));
+      }
+      least = std::min(least, farthest);
+    }
+    return least;
+  };
+  for (const Ring& hull : asset.levels[0].hulls) EXPECT_GE(width(hull), bound);
+  EXPECT_NO_THROW(write_bundle(result.assets));
 }
 
 INSTANTIATE_TEST_SUITE_P(Issue16, DrawnSpriteContract,

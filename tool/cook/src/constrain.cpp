@@ -111,8 +111,9 @@ using VertexKey = std::pair<double, double>;
 class Constrainer {
  public:
   // slack: the contract's slack for rounding (contract_slack of the pieces' outer rings).
-  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split, double slack)
-      : tau_(tau), limits_(limits), split_(split), slack_(slack) {}
+  Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split, double slack,
+              double merge_width)
+      : tau_(tau), limits_(limits), split_(split), slack_(slack), merge_width_(merge_width) {}
 
   // Places every piece, on up to threads threads: each piece's slots are its own (they depend
   // on it alone) and are joined in the pieces' order, whatever the thread count.
@@ -132,6 +133,16 @@ class Constrainer {
       progress = false;
       for (std::size_t k = 0; k < slots_.size(); ++k) {
         if (!slots_[k].placed && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
+      }
+    }
+    // A hull thinner than merge_width goes to a neighbour that can take it (one as thin too,
+    // whose merged hull may not be).
+    for (Slot& slot : slots_) slot.is_thin = slot.placed && width_of(slot.hull) < merge_width_;
+    progress = true;
+    while (progress) {
+      progress = false;
+      for (std::size_t k = 0; k < slots_.size(); ++k) {
+        if (slots_[k].is_thin && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
       }
     }
     for (std::size_t k = 0; k < slots_.size(); ++k) {
@@ -157,6 +168,7 @@ class Constrainer {
     bool merged = false;               // merged into another slot
     bool splits_into_slivers = false;  // every halving of its convex component left a sliver
     bool is_sliver = false;            // its component is a sliver: merged, or refused
+    bool is_thin = false;              // placed, but thinner than merge_width
   };
 
   // Appends to out the slots of piece: one, or those of its parts when it is split.
@@ -232,7 +244,7 @@ class Constrainer {
     std::vector<Option> options;
     for (std::size_t j = 0; j < slots_.size(); ++j) {
       const Slot& other = slots_[j];
-      if (j == k || !other.placed || other.piece.region != small.region ||
+      if (j == k || !other.placed || other.merged || other.piece.region != small.region ||
           !box.touches(Box(other.piece.component.outer))) {
         continue;
       }
@@ -265,6 +277,7 @@ class Constrainer {
       neighbour.piece = CookedPiece{std::move(option.merged), std::move(merged_hull),
                                     measured[0].concavity, neighbour.piece.region};
       neighbour.hull = std::move(*hull);
+      neighbour.is_thin = width_of(neighbour.hull) < merge_width_;
       slots_[k].merged = true;
       return true;
     }
@@ -373,6 +386,7 @@ class Constrainer {
   EngineLimits limits_;
   const SplitComponent& split_;
   double slack_;
+  double merge_width_;
   std::vector<Slot> slots_;
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
 };
@@ -402,11 +416,11 @@ bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
-                                             unsigned threads) {
+                                             unsigned threads, double merge_width) {
   std::vector<const Ring*> rings;
   rings.reserve(pieces.size());
   for (const CookedPiece& piece : pieces) rings.push_back(&piece.component.outer);
-  Constrainer constrainer(tau, limits, split, contract_slack(rings));
+  Constrainer constrainer(tau, limits, split, contract_slack(rings), merge_width);
   constrainer.add_all(std::move(pieces), threads);
   return constrainer.finish(source);
 }

@@ -12,6 +12,7 @@
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/parallel_for.h"
 #include "hullcook/core/poly_io.h"
+#include "hullcook/format/bundle_layout.h"
 #include "hullcook/trace/trace.h"
 #include "sheet.h"
 #include "tile_snap.h"
@@ -511,6 +512,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
     limits.keep_inside = EngineLimits::Box{{std::min(a.x, b.x), std::min(a.y, b.y)},
                                            {std::max(a.x, b.x), std::max(a.y, b.y)}};
   }
+  // A hull thinner than the bundle's quantization bound rounds to a segment on its grid (and is
+  // no shape an engine can use): it is merged into a neighbour where one can take it.
+  const double merge_width =
+      format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit);
   auto split = [&](const Region& component, double tau) {
     DecomposeSettings finer = decompose_settings;
     finer.tau = tau;
@@ -543,8 +548,9 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
         asset.stats.max_concavity = std::max(asset.stats.max_concavity, piece.concavity);
       }
     }
-    std::vector<CookedPiece> constrained = apply_engine_limits(
-        to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split, asset.source, threads);
+    std::vector<CookedPiece> constrained =
+        apply_engine_limits(to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split,
+                            asset.source, threads, merge_width);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {

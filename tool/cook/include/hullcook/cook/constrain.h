@@ -62,10 +62,13 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 // The pieces keep their order; a merged piece takes its neighbour's place. threads: how many may
 // fit the pieces' hulls at once (split is then called from as many); the result is the same for
 // any count.
+// merge_width [output units]: a hull thinner than this, though it meets the limits, is merged
+// into a neighbour as a piece too small for the weld is, where one can take it (the cooker passes
+// the bundle's quantization bound, on whose grid such a hull rounds to a segment).
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
-                                             unsigned threads = 1);
+                                             unsigned threads = 1, double merge_width = 0.0);
 
 // True when hull meets the limits' vertex count, weld and collinearity rules and is a convex,
 // counter-clockwise polygon with at least 3 vertices.
