@@ -137,7 +137,7 @@ class Constrainer {
     }
     // A hull thinner than merge_width goes to a neighbour that can take it (one as thin too,
     // whose merged hull may not be).
-    for (Slot& slot : slots_) slot.is_thin = slot.placed && width_of(slot.hull) < merge_width_;
+    for (Slot& slot : slots_) slot.is_thin = slot.placed && is_thin(slot.hull);
     progress = true;
     while (progress) {
       progress = false;
@@ -277,7 +277,7 @@ class Constrainer {
       neighbour.piece = CookedPiece{std::move(option.merged), std::move(merged_hull),
                                     measured[0].concavity, neighbour.piece.region};
       neighbour.hull = std::move(*hull);
-      neighbour.is_thin = width_of(neighbour.hull) < merge_width_;
+      neighbour.is_thin = is_thin(neighbour.hull);
       slots_[k].merged = true;
       return true;
     }
@@ -341,6 +341,16 @@ class Constrainer {
       }
     }
     return false;
+  }
+
+  // Whether hull (convex) is thinner than merge_width. Its area is at most its width times its
+  // diameter, at most its box's diagonal: most hulls are shown wide by that, without width_of's
+  // quadratic cost (a hull of --max-verts 0 may have thousands of vertices).
+  bool is_thin(const Ring& hull) const {
+    if (merge_width_ <= 0) return false;
+    const Box box(hull);
+    if (std::abs(signed_area(hull)) >= merge_width_ * glm::length(box.high - box.low)) return false;
+    return width_of(hull) < merge_width_;
   }
 
   bool is_small(const CookedPiece& piece) const {
