@@ -322,6 +322,36 @@ DrawnImage mosaic(Random& random, std::uint64_t seed) {
   return std::move(canvas).image(ImageFamily::mosaic, seed, description.str());
 }
 
+// One to three radial falloffs of alpha with a ripple along x, their centres anywhere from a
+// fifth of the image outside it to inside: the opaque part is often cut by the image's border.
+DrawnImage soft_edges(Random& random, std::uint64_t seed) {
+  const int width = random.integer(16, 200), height = random.integer(16, 200);
+  Canvas canvas(width, height);
+  std::vector<std::uint8_t> alpha(static_cast<std::size_t>(width) * height, kClear);
+  const int blobs = random.integer(1, 3);
+  std::ostringstream description;
+  description << width << "x" << height << " px, " << blobs << " falloffs (slope, ripple):";
+  for (int b = 0; b < blobs; ++b) {
+    const double cx = random.uniform(-0.2, 1.2) * width, cy = random.uniform(-0.2, 1.2) * height;
+    const double slope = random.uniform(0.5, 8), ripple = random.uniform(0, 60);
+    const double frequency = random.uniform(0.2, 1.2);
+    description << " (" << slope << ", " << ripple << ")";
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const double value =
+            255 - slope * std::hypot(x - cx, y - cy) + ripple * std::sin(frequency * x);
+        std::uint8_t& a = alpha[static_cast<std::size_t>(y) * width + x];
+        a = std::max(a, static_cast<std::uint8_t>(std::clamp(static_cast<int>(value), 0, 255)));
+      }
+    }
+  }
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x)
+      canvas.set(x, y, alpha[static_cast<std::size_t>(y) * width + x]);
+  }
+  return std::move(canvas).image(ImageFamily::soft_edges, seed, description.str());
+}
+
 }  // namespace
 
 std::size_t images_to_draw(ImageFamily family, std::size_t wanted) {
@@ -334,7 +364,8 @@ std::size_t images_to_draw(ImageFamily family, std::size_t wanted) {
 const std::vector<ImageFamily>& all_image_families() {
   static const std::vector<ImageFamily> families{
       ImageFamily::tileset,         ImageFamily::frame,      ImageFamily::button,
-      ImageFamily::one_pixel_walls, ImageFamily::grid_sheet, ImageFamily::mosaic};
+      ImageFamily::one_pixel_walls, ImageFamily::grid_sheet, ImageFamily::mosaic,
+      ImageFamily::soft_edges};
   return families;
 }
 
@@ -352,6 +383,8 @@ const char* image_family_name(ImageFamily family) {
       return "grid_sheet";
     case ImageFamily::mosaic:
       return "mosaic";
+    case ImageFamily::soft_edges:
+      return "soft_edges";
   }
   return "?";
 }
@@ -378,6 +411,8 @@ DrawnImage draw_image(ImageFamily family, std::uint64_t seed) {
       return grid_sheet(seed);
     case ImageFamily::mosaic:
       return mosaic(random, seed);
+    case ImageFamily::soft_edges:
+      return soft_edges(random, seed);
   }
   return grid_sheet(seed);
 }

@@ -1,6 +1,7 @@
 // Sprites drawn by the stress tests (issue 16): the art on which hole resolution gave up
 // (tilesets, frames, UI buttons whose holes nearly fill them, one-pixel walls, a 1000x1000 sheet
-// of 400 cells), each drawn from one 64-bit seed with hard 0/255 alpha edges.
+// of 400 cells), each drawn from one 64-bit seed, with hard 0/255 alpha edges but for the soft
+// family.
 #pragma once
 
 #include <cstddef>
@@ -20,6 +21,8 @@ enum class ImageFamily {
   grid_sheet,       // 1000x1000 px, 20x20 cells of 48 px behind 2 px lines: 400 holes
   mosaic,           // the other families' sprites side by side, 640 px a side or more: one
                     // image large enough that its tracing takes the cook's threads (issue 17)
+  soft_edges,       // rippled radial falloffs of alpha, often cut by the image's border, where
+                    // an edge traced at a low threshold runs a hundredth of a pixel from straight
 };
 
 // How many of a family's images a run of `wanted` per family draws: one grid sheet (every seed
@@ -35,7 +38,7 @@ struct DrawnImage {
   std::uint64_t seed = 0;
   std::string description;
   int width = 0, height = 0;
-  std::vector<std::uint8_t> alpha;  // row-major, 0 or 255
+  std::vector<std::uint8_t> alpha;  // row-major, 0 or 255 but in soft_edges
 };
 
 DrawnImage draw_image(ImageFamily family, std::uint64_t seed);

@@ -152,17 +152,10 @@ void print_tally(const std::string& family, const Tally& tally) {
   }
 }
 
-// The cook settings images are judged under: tau 1 and 4 px at 1 px per unit, tau 1 px at 100.
-std::vector<CookCase> image_cooks(const Options& options) {
-  std::vector<CookCase> cooks;
-  for (Measure measure : options.measures_given ? options.measures : std::vector{Measure::h1}) {
-    for (const auto& [tau_px, pixels_per_unit] : {std::pair{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}}) {
-      CookCase cook;
-      cook.tau_px = tau_px, cook.pixels_per_unit = pixels_per_unit, cook.measure = measure;
-      cooks.push_back(cook);
-    }
-  }
-  return cooks;
+// The cooks images are judged under, at the measures given (else H1).
+std::vector<CookCase> image_cooks(const Options& options,
+                                  std::optional<ImageFamily> family = std::nullopt) {
+  return image_cooks(options.measures_given ? options.measures : std::vector{Measure::h1}, family);
 }
 
 // Decomposes regions under every measure and tau, and cooks file at every tau (polygon_cook).
@@ -240,13 +233,13 @@ int run(const Options& options) {
     any_failed = any_failed || case_failed;
   }
   const std::size_t images = options.images.value_or(std::max<std::size_t>(1, options.cases / 20));
-  const std::vector<CookCase> cooks = image_cooks(options);
   for (ImageFamily family :
        options.inputs.empty() ? options.image_families : std::vector<ImageFamily>{}) {
     const std::string name = image_family_name(family);
     order.push_back(name);
     Tally& tally = tallies[name];
     const std::size_t count = images_to_draw(family, images);
+    const std::vector<CookCase> cooks = image_cooks(options, family);
     for (std::size_t i = 0; i < count; ++i) {
       const DrawnImage image = draw_image(family, options.seed + i);
       ++tally.cases;
@@ -268,7 +261,7 @@ int run(const Options& options) {
   for (double tau : options.taus) std::printf(" %g", tau);
   std::printf(
       "; polygons also cooked at each tau (weld 0 at tau 0); images cooked at tau 1 and 4 px and "
-      "at tau 1 px with 100 px per unit\n");
+      "at tau 1 px with 100 px per unit, soft edges also at tau 0.25 px, alpha 1, simplify 0\n");
   for (const std::string& name : order) print_tally(name, tallies[name]);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -35,12 +35,17 @@ std::string number(double value) {
 std::string cook_replay(const std::filesystem::path& input, const CookCase& settings) {
   return "hullcook cook " + input.string() + " --tau " + number(settings.tau_px) + " --ppu " +
          number(settings.pixels_per_unit) + " --measure " + measure_name(settings.measure) +
-         (settings.weld ? " --weld " + number(*settings.weld) : std::string()) + " -o cooked.json";
+         (settings.weld ? " --weld " + number(*settings.weld) : std::string()) +
+         (settings.alpha != 128 ? " --alpha " + number(settings.alpha) : std::string()) +
+         (settings.simplify ? " --simplify " + number(*settings.simplify) : std::string()) +
+         " -o cooked.json";
 }
 
 std::string cook_label(const std::string& name, const CookCase& settings) {
   return name + ", cook " + measure_name(settings.measure) + ", tau " + number(settings.tau_px) +
-         ", ppu " + number(settings.pixels_per_unit);
+         ", ppu " + number(settings.pixels_per_unit) +
+         (settings.alpha != 128 ? ", alpha " + number(settings.alpha) : std::string()) +
+         (settings.simplify ? ", simplify " + number(*settings.simplify) : std::string());
 }
 
 CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& settings) {
@@ -50,6 +55,8 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
   cook_settings.pixels_per_unit = settings.pixels_per_unit;
   cook_settings.measure = measure_name(settings.measure);
   cook_settings.weld = settings.weld;
+  cook_settings.alpha = settings.alpha;
+  cook_settings.simplify = settings.simplify;
   cook_settings.threads = 1;
   auto start = Clock::now();
   try {
@@ -84,6 +91,12 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
       threaded_bundle = "cook threw " + std::string(error.what());
     }
     const std::string bundle = bundle_of(result.assets);
+    // Drawn sprites and polygons within the stress's scales all fit the bundle's grid.
+    if (bundle.starts_with("refused")) {
+      const std::string rule = "the .hcb writer refused the asset";
+      ++outcome.report.counts[rule];
+      outcome.report.examples.push_back({rule, bundle.substr(0, 300)});
+    }
     if (threaded_bundle != bundle) {
       const std::string rule = "3 threads change the output";
       ++outcome.report.counts[rule];
@@ -119,8 +132,32 @@ std::string CaseOutcome::message() const {
   return text.str();
 }
 
+CookCase image_cook(double tau_px, double pixels_per_unit, Measure measure) {
+  CookCase cook;
+  cook.tau_px = tau_px, cook.pixels_per_unit = pixels_per_unit, cook.measure = measure;
+  return cook;
+}
+
+std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
+                                  std::optional<ImageFamily> family) {
+  std::vector<CookCase> cooks;
+  for (Measure measure : measures) {
+    for (const auto& [tau_px, pixels_per_unit] : {std::pair{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}}) {
+      cooks.push_back(image_cook(tau_px, pixels_per_unit, measure));
+    }
+    if (family == ImageFamily::soft_edges) {
+      CookCase faint = image_cook(0.25, 1.0, measure);
+      faint.alpha = 1, faint.simplify = 0.0;
+      cooks.push_back(faint);
+    }
+  }
+  return cooks;
+}
+
 CookCase polygon_cook(double tau, Measure measure) {
-  return {tau, 1.0, measure, tau > 0 ? std::nullopt : std::optional<double>(0.0)};
+  CookCase cook = image_cook(tau, 1.0, measure);
+  if (tau == 0) cook.weld = 0.0;
+  return cook;
 }
 
 CaseOutcome run_polygon_case(const GeneratedCase& generated, Measure measure, double tau,
