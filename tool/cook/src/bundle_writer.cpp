@@ -147,8 +147,13 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   double moved_squared = 0.0, size = 0.0;
   for (const Vec2& p : hull) {
     // Keep |base| + 2^15 within int32.
-    if (std::fabs(p.x / quantum) > 2.0e9 || std::fabs(p.y / quantum) > 2.0e9)
-      fail(asset, "a hull vertex is too far from the origin for the bundle's 32-bit grid");
+    if (std::fabs(p.x / quantum) > 2.0e9 || std::fabs(p.y / quantum) > 2.0e9) {
+      fail(asset, "a hull vertex at (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                      ") is too far from the origin for the bundle's 32-bit grid (at most " +
+                      std::to_string(2.0e9 * quantum) + " output units at its step of " +
+                      std::to_string(quantum) +
+                      "); move the input nearer the origin, or write glTF");
+    }
     const GridPoint q = round_to_grid(p, quantum, rounding, centroid);
     points.push_back(q);
     // format::dequantize gives the grid point's value as qx * quantum exactly.
