@@ -1,7 +1,9 @@
 #include "hullcook/cook/debug_json.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace hullcook {
 namespace {
@@ -60,9 +62,12 @@ class JsonWriter {
       out_ += "null";  // JSON has no infinities; never produced by valid cooking
       return;
     }
+    // As printf's "%.17g" (the standard defines to_chars so), at a tenth of its cost: a debug
+    // JSON of a large cook holds millions of numbers, and printing them doubled its time.
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    out_ += buffer;
+    const std::to_chars_result printed =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+    out_.append(buffer, printed.ptr);
   }
 
   void integer(std::size_t value) { out_ += std::to_string(value); }
@@ -139,6 +144,22 @@ class JsonWriter {
 std::string debug_json(const std::vector<CookedAsset>& assets) {
   JsonWriter json;
   std::string& out = json.out();
+  // A point prints as about 45 bytes: reserved at once, the text is not copied as it grows
+  // (a large cook's debug JSON is tens of megabytes).
+  std::size_t points = 0;
+  const auto count = [&](const Region& region) {
+    points += region.outer.size();
+    for (const Ring& hole : region.holes) points += hole.size();
+  };
+  for (const CookedAsset& asset : assets) {
+    for (const Region& region : asset.regions) count(region);
+    for (const CookedPiece& piece : asset.pieces)
+      count(piece.component), points += piece.hull.size();
+    for (const CookedLevel& level : asset.levels) {
+      for (const Ring& hull : level.hulls) points += hull.size();
+    }
+  }
+  out.reserve(48 * points + 1024 * (assets.size() + 1));
   out += "{\"hullcook\": 1,\n \"assets\": [";
   for (std::size_t a = 0; a < assets.size(); ++a) {
     const CookedAsset& asset = assets[a];
@@ -245,7 +266,7 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
     out += "}}";
   }
   out += "\n ]}\n";
-  return out;
+  return std::move(out);
 }
 
 }  // namespace hullcook
