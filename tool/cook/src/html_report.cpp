@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace hullcook {
 namespace {
@@ -235,7 +236,7 @@ std::string html_report(const CookResult& result) {
     write_card(out, i, result.assets[i], sprites);
   }
   out << "</main>\n<script>" << kScript << "</script>\n</body>\n</html>\n";
-  return out.str();
+  return std::move(out).str();  // C++20: the buffer, not a copy of it
 }
 
 }  // namespace hullcook
