@@ -113,8 +113,7 @@ GridPoint round_to_grid(Vec2 p, double quantum, Rounding rounding, Vec2 centroid
     return {static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
             static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
   const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
-  GridPoint best{static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
-                 static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
+  GridPoint best = round_to_grid(p, quantum, Rounding::nearest, centroid);
   const Vec2 away = p - centroid;
   double best_reach = glm::dot(Vec2{best.x * quantum, best.y * quantum} - p, away);
   for (int corner = 0; corner < 4; ++corner) {

@@ -128,23 +128,11 @@ class Constrainer {
   // Places the pieces no hull of their own could hold: each is merged into a neighbour, or
   // given the smallest engine-ready hull that holds it. Throws InputError when neither keeps τ.
   std::vector<CookedPiece> finish(std::string_view source) {
-    bool progress = true;
-    while (progress) {
-      progress = false;
-      for (std::size_t k = 0; k < slots_.size(); ++k) {
-        if (!slots_[k].placed && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
-      }
-    }
+    merge_while([](const Slot& slot) { return !slot.placed; });
     // A hull thinner than merge_width goes to a neighbour that can take it (one as thin too,
     // whose merged hull may not be).
     for (Slot& slot : slots_) slot.is_thin = slot.placed && is_thin(slot.hull);
-    progress = true;
-    while (progress) {
-      progress = false;
-      for (std::size_t k = 0; k < slots_.size(); ++k) {
-        if (slots_[k].is_thin && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
-      }
-    }
+    merge_while([](const Slot& slot) { return slot.is_thin; });
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       if (slots_[k].placed || slots_[k].merged) continue;
       // A grown hull would still hold a sliver.
@@ -231,6 +219,19 @@ class Constrainer {
   }
 
  private:
+  // Merges every slot that wants it (and is not merged already) into a neighbour, pass after
+  // pass while one merges: a merge may make room for another.
+  template <typename Wants>
+  void merge_while(const Wants& wants) {
+    bool progress = true;
+    while (progress) {
+      progress = false;
+      for (std::size_t k = 0; k < slots_.size(); ++k) {
+        if (wants(slots_[k]) && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
+      }
+    }
+  }
+
   // Merges slot k into the neighbour it shares the longest cut with, among those whose merged
   // component needs no split at τ and whose hull then fits within the limits.
   bool merge_into_neighbour(std::size_t k) {
