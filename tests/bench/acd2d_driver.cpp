@@ -5,7 +5,7 @@
 //
 // A long-lived child of bench_decompose, so that both programs stay warm and take turns:
 // every line on stdin asks for one row,
-//   <file.poly> <τ in input units> <sl|sp|h1> <repetitions>
+//   <file.poly> <τ in input units> <sl|sp|h1> <repetitions> [<warm-up ms>]
 // and gets one line back,
 //   ok <R> <fewest pieces> <most pieces> <ms> ... (one CPU time per repetition)
 // or `error <text>`. The polygon is read and normalised the way the authors' command line does
@@ -14,7 +14,8 @@
 // of R), with its default cut weights (alpha 0, beta 1). The τ asked for is divided by that R,
 // so both programs cut at the same τ in input units whatever R the caller assumed. Only
 // cd_2d::decomposeAll is timed: reading, copying the polygon into cd_2d and freeing the pieces are
-// not.
+// not. With a warm-up, the row is first decomposed untimed until that much CPU time has passed
+// (at least once), as bench_decompose does for ours: see authors_comparison.cpp.
 #include "acd2d.h"
 
 #include <time.h>
@@ -68,15 +69,18 @@ std::string time_row(const std::string& request, std::map<std::string, LoadedPol
   std::string path, measure;
   double tau = 0;
   int repetitions = 0;
+  double warm_up_ms = 0;
   if (!(fields >> path >> tau >> measure >> repetitions) || repetitions < 1)
-    throw std::runtime_error("expected: <file.poly> <tau> <measure> <repetitions>");
+    throw std::runtime_error("expected: <file.poly> <tau> <measure> <repetitions> [<warm-up ms>]");
+  if (!(fields >> warm_up_ms)) warm_up_ms = 0;
   const LoadedPolygon& loaded = load(path, cache);
   const double fraction = tau / loaded.radius;
   const std::string their_measure = measure_name(measure);
   std::ostringstream reply;
   std::size_t fewest = SIZE_MAX, most = 0;
   std::vector<double> times;
-  for (int r = 0; r < repetitions; ++r) {
+  // One decomposition; its CPU time [ms] and pieces.
+  auto decompose_once = [&](std::size_t& pieces) {
     acd2d::cd_2d decomposition;
     decomposition.addPolygon(loaded.polygon);
     std::unique_ptr<acd2d::IConcavityMeasure> concavity(
@@ -84,8 +88,18 @@ std::string time_row(const std::string& request, std::map<std::string, LoadedPol
     decomposition.updateCutDirParameters(0, 1);
     const double start = thread_cpu_ms();
     decomposition.decomposeAll(fraction, concavity.get());
-    times.push_back(thread_cpu_ms() - start);
-    const std::size_t pieces = decomposition.getDoneList().size();
+    const double ms = thread_cpu_ms() - start;
+    pieces = decomposition.getDoneList().size();
+    return ms;
+  };
+  std::size_t pieces = 0;
+  if (warm_up_ms > 0) {
+    const double warm_up_end = thread_cpu_ms() + warm_up_ms;
+    do decompose_once(pieces);
+    while (thread_cpu_ms() < warm_up_end);
+  }
+  for (int r = 0; r < repetitions; ++r) {
+    times.push_back(decompose_once(pieces));
     fewest = std::min(fewest, pieces);
     most = std::max(most, pieces);
   }
