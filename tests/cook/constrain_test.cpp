@@ -323,6 +323,31 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
       << queries_with_shortcut << " queries with the shortcut, " << queries_without << " without";
 }
 
+// Issue 17's robustness hunt: a 2000-vertex circle (.poly) at the default --max-verts 8 took 17 s
+// and an m x m table of apexes (64 MB), every halving level trying every start; no start can close
+// when the greedy chain from one start needs two lines more than max_verts.
+TEST(EngineLimits, Issue17_HullThatNoEightLinesCloseIsRefusedAfterOneGreedyChain) {
+  const Ring circle = regular_polygon(1500, 100);
+  const CookedPiece piece = convex_piece(circle);
+  const EngineLimits limits{8, 0.005};
+  // Eight lines round a radius-100 circle reach 100 / cos(22.5°) - 100 ≈ 8.2 out: beyond τ 2.
+  const double tau = 2;
+  const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
+  const OutlineDistance reach({&piece.component});
+  HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component,
+                    pockets_within(piece.component, piece.hull, tau), tau, limits);
+  const std::uint64_t before = reach.distance_queries();
+  EXPECT_FALSE(fitter.fit(piece.hull).has_value());
+  // One query per corner, then one per line scanned by the ten lines of one greedy chain (about
+  // 95 lines each): every start's chain was 1500 x 95.
+  EXPECT_LT(reach.distance_queries() - before, 3000u);
+  // Halved until each part fits: the contract holds.
+  const auto pieces = apply_engine_limits({piece}, tau, limits, no_split, "test");
+  EXPECT_GT(pieces.size(), 1u);
+  EXPECT_NEAR(area_of(pieces), ring_area(circle), 1e-6 * ring_area(circle));
+  expect_within(pieces, tau, limits);
+}
+
 // From a seeded random simple polygon on a 0.01 grid (the stress family random_simple): its
 // vertices (0.82, 0.12), (0.88, 0.18), (0.92, 0.22) are collinear in decimal, but in binary the
 // middle one turns left by an orientation of 5.6e-19. At τ 0 they stay in one convex piece.

@@ -315,6 +315,15 @@ bool HullFitter::too_small(const Ring& hull) const {
 
 std::optional<Ring> HullFitter::fit(Ring hull) {
   const Ring given = hull;
+  // Mending and reducing keep some of the given hull's edge lines and drop the others, and the
+  // lines a polygon they make keeps would close a chain of the given hull's: when no chain of
+  // max_verts lines closes round it, neither step can succeed. Mending a hull of thousands of
+  // nearly collinear vertices one edge at a time (a 2000-vertex circle) took tens of seconds,
+  // before the reduction found no chain short enough.
+  if (limits_.max_verts != 0 && hull.size() > limits_.max_verts &&
+      !may_close_within_max_verts(hull)) {
+    return std::nullopt;
+  }
   // Reducing the vertex count creates new apexes, which may need welding again.
   for (int round = 0; round < 4; ++round) {
     std::optional<Ring> mended = mend_local_violations(std::move(hull));
@@ -373,6 +382,20 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
   }
 }
 
+namespace {
+
+// Where the lines of hull edges i and j meet; t: how far along edge i, in its lengths.
+Vec2 line_apex(const Ring& hull, std::size_t i, std::size_t j, double* t_out = nullptr) {
+  const std::size_t m = hull.size();
+  Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
+  Vec2 first = b - a, second = d - c;
+  double t = cross(c - a, second) / cross(first, second);
+  if (t_out) *t_out = t;
+  return a + first * t;
+}
+
+}  // namespace
+
 // Keeps as few of the hull's edge lines as possible (at most max_verts) so that the polygon
 // they bound stays within bound of the outline. From every starting edge, each kept line is
 // followed by the farthest line whose meeting point with it is still within bound: greedy
@@ -380,14 +403,7 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
 // polygons are then proven (area and component depths) smallest first.
 std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   std::size_t m = hull.size();
-  apex_cache_.assign(m * m, ApexState::unknown);
-  // The hull holds the component but for rounding (holds_component lets a vertex lie outside by
-  // 1e-12 of the hull's size): clearly_beyond allows twice that.
-  outside_by_rounding_ = 2e-12 * size_of(hull);
-  corner_reach_.resize(m);
-  for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
-  // Read only where apex_cache_ says within, which apex_within writes together with the point.
-  apex_points_.resize(m * m);
+  if (!may_close_within_max_verts(hull)) return std::nullopt;
   // The chains that close, one after the other in closed_, each a span of it (a vector per chain
   // was a tenth of the allocations of a cook).
   closed_.clear();
@@ -399,11 +415,7 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
     std::size_t current = start;
     bool is_closed = false;
     while (chain.size() <= limits_.max_verts) {
-      std::size_t farthest = current + 1;
-      for (std::size_t j = current + 2; j <= start + m; ++j) {
-        if (!apex_within(hull, current % m, j % m)) break;
-        farthest = j;
-      }
+      const std::size_t farthest = current + reach_from(hull, current % m, start + m - current);
       if (farthest == start + m) {
         is_closed = true;
         break;
@@ -438,7 +450,7 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
     polygon.reserve(size);
     for (std::size_t k = 0; k < size; ++k) {
       std::size_t i = kept[k], j = kept[(k + 1) % size];
-      polygon.push_back((i + 1) % m == j ? hull[j] : apex_points_[i * m + j]);
+      polygon.push_back((i + 1) % m == j ? hull[j] : line_apex(hull, i, j));
     }
     // The new edges are the stretches apex_within checked.
     if (holds_component(polygon) && (edges_suffice_ || growth_within(polygon, hull))) {
@@ -448,45 +460,73 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   return std::nullopt;
 }
 
+// The greedy chain from edge 0, one line past max_verts: a chain of k lines from any start
+// means one of at most k + 1 from edge 0 (its lines stay ahead of that chain's, and one more
+// wraps round). When that one needs more, no start closes within max_verts. Also prepares the
+// scans for reduce_vertex_count.
+bool HullFitter::may_close_within_max_verts(const Ring& hull) {
+  const std::size_t m = hull.size();
+  // What is known of the lines after each edge line: a prefix of them (the scans stop at the
+  // first beyond), so O(m) memory where an m x m table took 64 MB for a 2000-vertex hull.
+  reach_known_.assign(m, 1);
+  beyond_after_known_.assign(m, 0);
+  // The hull holds the component but for rounding (holds_component lets a vertex lie outside by
+  // 1e-12 of the hull's size): clearly_beyond allows twice that.
+  outside_by_rounding_ = 2e-12 * size_of(hull);
+  corner_reach_.resize(m);
+  for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
+  std::size_t current = 0, lines = 1;
+  while (lines <= limits_.max_verts + 1) {
+    current += reach_from(hull, current, m - current);
+    if (current == m) return true;
+    ++lines;
+  }
+  return false;
+}
+
+// How many lines on from edge line i (at most limit) the scan reaches: the largest d <= limit
+// such that the lines i + 2 ... i + d each meet line i within bound (1 when none does).
+std::size_t HullFitter::reach_from(const Ring& hull, std::size_t i, std::size_t limit) {
+  const std::size_t m = hull.size();
+  std::size_t& known = reach_known_[i];
+  while (known < limit && !beyond_after_known_[i]) {
+    if (apex_within(hull, i, (i + known + 1) % m)) {
+      ++known;
+    } else {
+      beyond_after_known_[i] = 1;
+    }
+  }
+  return std::min(known, limit);
+}
+
 // Whether the lines of edges i and j (j after i, counter-clockwise, not adjacent) meet at a
 // point within bound of the outline, and the stretches of those lines that would become new
 // edges stay within bound.
-bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) {
+bool HullFitter::apex_within(const Ring& hull, std::size_t i, std::size_t j) const {
   std::size_t m = hull.size();
-  ApexState& state = apex_cache_[i * m + j];
-  if (state == ApexState::unknown) {
-    state = ApexState::beyond;
-    Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
-    Vec2 first = b - a, second = d - c;
-    double denominator = cross(first, second);
-    if (denominator > 0) {
-      double t = cross(c - a, second) / denominator;
-      Vec2 apex = a + first * t;
-      bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t) &&
-                   (!limits_.keep_inside || limits_.keep_inside->holds(apex));
-      std::optional<OutlineDistance::EdgeSpan> nearest;
-      OutlineDistance::EdgeSpan found{};
-      double at_apex = bound_ + 1;
-      if (ahead && !clearly_beyond(hull, i, j, apex)) {
-        at_apex = reach_.distance(apex, bound_, &found);
-        if (at_apex > 0 && at_apex <= bound_) nearest = found;
-      }
-      // A segment needs no closer look when distance, 1-Lipschitz, cannot exceed bound between
-      // its ends, or when both ends lie within bound of the edge nearest the apex (the distance
-      // to one edge is convex along the segment).
-      auto within = [&](Vec2 corner, double at_corner) {
-        return (at_corner + at_apex + glm::length(apex - corner)) / 2 <= bound_ ||
-               (nearest && point_segment_distance(corner, nearest->a, nearest->b) <= bound_) ||
-               reach_.segment_within(corner, apex, bound_);
-      };
-      if (at_apex <= bound_ && within(b, corner_reach_[(i + 1) % m]) &&
-          within(c, corner_reach_[j])) {
-        state = ApexState::within;
-        apex_points_[i * m + j] = apex;
-      }
-    }
+  Vec2 a = hull[i], b = hull[(i + 1) % m], c = hull[j], d = hull[(j + 1) % m];
+  if (!(cross(b - a, d - c) > 0)) return false;
+  double t = 0;
+  const Vec2 apex = line_apex(hull, i, j, &t);
+  const Vec2 second = d - c;
+  bool ahead = t >= 1 && glm::dot(apex - c, second) <= 0 && std::isfinite(t) &&
+               (!limits_.keep_inside || limits_.keep_inside->holds(apex));
+  std::optional<OutlineDistance::EdgeSpan> nearest;
+  OutlineDistance::EdgeSpan found{};
+  double at_apex = bound_ + 1;
+  if (ahead && !clearly_beyond(hull, i, j, apex)) {
+    at_apex = reach_.distance(apex, bound_, &found);
+    if (at_apex > 0 && at_apex <= bound_) nearest = found;
   }
-  return state == ApexState::within;
+  // A segment needs no closer look when distance, 1-Lipschitz, cannot exceed bound between
+  // its ends, or when both ends lie within bound of the edge nearest the apex (the distance
+  // to one edge is convex along the segment).
+  auto within = [&](Vec2 corner, double at_corner) {
+    return (at_corner + at_apex + glm::length(apex - corner)) / 2 <= bound_ ||
+           (nearest && point_segment_distance(corner, nearest->a, nearest->b) <= bound_) ||
+           reach_.segment_within(corner, apex, bound_);
+  };
+  return at_apex <= bound_ && within(b, corner_reach_[(i + 1) % m]) && within(c, corner_reach_[j]);
 }
 
 // Whether the apex of edges i and j lies, by its distance beyond the line of an edge it cuts off,

@@ -73,10 +73,10 @@ class HullFitter {
   bool too_small(const Ring& hull) const;
   std::optional<Ring> mend_local_violations(Ring hull) const;
   std::optional<Ring> reduce_vertex_count(const Ring& hull);
-  bool apex_within(const Ring& hull, std::size_t i, std::size_t j);
+  bool may_close_within_max_verts(const Ring& hull);
+  std::size_t reach_from(const Ring& hull, std::size_t i, std::size_t limit);
+  bool apex_within(const Ring& hull, std::size_t i, std::size_t j) const;
   bool clearly_beyond(const Ring& hull, std::size_t i, std::size_t j, Vec2 apex) const;
-
-  enum class ApexState : unsigned char { unknown, within, beyond };
 
   const Region& component_;
   const std::vector<double>& allowed_;
@@ -85,8 +85,10 @@ class HullFitter {
   bool edges_suffice_;
   double bound_;
   EngineLimits limits_;
-  std::vector<ApexState> apex_cache_;
-  std::vector<Vec2> apex_points_;
+  // Per edge line of the hull being reduced: how many lines on its scan is known to reach (see
+  // reach_from), and whether the line after those is known to be beyond.
+  std::vector<std::size_t> reach_known_;
+  std::vector<char> beyond_after_known_;
   std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
   double outside_by_rounding_ = 0;    // how far a component vertex may lie outside that hull
   // reduce_vertex_count's chains: the one being followed, and those that closed.
