@@ -348,6 +348,95 @@ TEST(EngineLimits, Issue17_HullThatNoEightLinesCloseIsRefusedAfterOneGreedyChain
   expect_within(pieces, tau, limits);
 }
 
+// Issue 17's robustness hunt: a square of 4000 vertices bulging out by 1e-6 (nearly collinear
+// on its sides) took minutes to cook, every removal of a hull edge checked against every vertex
+// and edge. The mending checks only what a removal changes; it must decide as the whole-hull
+// checks do, on hulls of nearly collinear vertices, jittered circles and pieces of stars.
+TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksDo) {
+  std::mt19937 random(1704);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Ring> shapes;
+  for (int sides : {30, 80}) {  // squares with sides of that many nearly collinear vertices
+    Ring square;
+    const Vec2 corners[4] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+    for (int c = 0; c < 4; ++c) {
+      const Vec2 from = corners[c], to = corners[(c + 1) % 4];
+      const Vec2 outward = Vec2{to.y - from.y, from.x - to.x} / 100.0;
+      for (int i = 0; i < sides; ++i) {
+        const double t = static_cast<double>(i) / sides;
+        square.push_back(from + (to - from) * t + outward * (1e-6 * std::sin(M_PI * t)));
+      }
+    }
+    shapes.push_back(square);
+  }
+  for (int trial = 0; trial < 6; ++trial) {  // circles, their radii jittered
+    const int n = 60 + 50 * trial;
+    const double jitter = trial % 2 == 0 ? 1e-9 : 1e-3;
+    Ring circle;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * i / n;
+      circle.push_back((50 + jitter * (unit(random) - 0.5)) *
+                       Vec2{std::cos(angle), std::sin(angle)});
+    }
+    shapes.push_back(circle);
+  }
+  for (int tips : {60, 100}) {  // crowns: tips closer than the weld over notches deeper than τ
+    Ring crown;
+    for (int i = 0; i < 2 * tips; ++i) {
+      const double angle = M_PI * i / tips;
+      crown.push_back((i % 2 == 0 ? 5.0 : 4.0) * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    shapes.push_back(crown);
+  }
+  for (int trial = 0; trial < 4; ++trial) {  // stars
+    Ring star;
+    const int n = 80 + 40 * trial;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * i / n;
+      star.push_back((40 + 15 * unit(random)) * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    shapes.push_back(star);
+  }
+  int compared = 0, changed = 0, refused = 0;
+  for (const Ring& shape : shapes) {
+    for (double tau : {0.5, 2.0}) {
+      // Its pieces at τ, and the whole shape as one piece (its pockets deeper than τ allowed).
+      std::vector<CookedPiece> pieces = decompose_at(Region{shape, {}}, tau);
+      pieces.push_back(convex_piece_of(shape));
+      for (const CookedPiece& piece : pieces) {
+        for (double weld : {0.005, 0.05, 0.4}) {
+          {
+            const EngineLimits limits{0, weld};
+            const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
+            const OutlineDistance reach({&piece.component});
+            const bool edges_suffice = pockets_within(piece.component, piece.hull, tau);
+            HullFitter local(piece.component, allowed, reach, HullFitter::Reach::component,
+                             edges_suffice, tau, limits);
+            HullFitter whole(piece.component, allowed, reach, HullFitter::Reach::component,
+                             edges_suffice, tau, limits);
+            whole.check_whole_hull_when_mending(true);
+            const std::optional<Ring> by_change = local.mend_local_violations(piece.hull);
+            const std::optional<Ring> by_whole = whole.mend_local_violations(piece.hull);
+            ++compared;
+            ASSERT_EQ(by_change.has_value(), by_whole.has_value())
+                << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+            if (!by_change) {
+              ++refused;
+              continue;
+            }
+            EXPECT_EQ(*by_change, *by_whole)
+                << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+            if (*by_change != piece.hull) ++changed;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 200);
+  EXPECT_GT(changed, 50);  // the mending is exercised
+  EXPECT_GT(refused, 10);  // and refuses some removals
+}
+
 // From a seeded random simple polygon on a 0.01 grid (the stress family random_simple): its
 // vertices (0.82, 0.12), (0.88, 0.18), (0.92, 0.22) are collinear in decimal, but in binary the
 // middle one turns left by an orientation of 5.6e-19. At τ 0 they stay in one convex piece.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <tuple>
 
 namespace hullcook {
@@ -21,6 +22,17 @@ double distance_to_ring(Vec2 p, const Ring& ring) {
     best = std::min(best, point_segment_distance_squared(p, ring[i], ring[i + 1 == n ? 0 : i + 1]));
   }
   return std::sqrt(best);
+}
+
+// The square of distance_to_ring, and the start of the first edge at that distance.
+std::pair<double, Vec2> squared_distance_and_edge(Vec2 p, const Ring& ring) {
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t at = 0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const double squared = point_segment_distance_squared(p, ring[i], ring[i + 1 == n ? 0 : i + 1]);
+    if (squared < best) best = squared, at = i;
+  }
+  return {best, ring[at]};
 }
 
 double size_of(const Ring& ring) {
@@ -118,12 +130,37 @@ std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& lim
       want(i + n - 1);
       want(i);
     }
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (glm::length(hull[i] - hull[j]) < limits.weld) {
-        want(i + n - 1);
-        want(i);
-        want(j + n - 1);
-        want(j);
+  }
+  // Pairs closer than the weld, found in order along an axis (every pair was measured: quadratic
+  // in hulls of thousands of vertices). Only vertices within the weld along it can be that close.
+  // The axis is at an angle of 1 radian, so that no side along x, y or a small-integer slope (a
+  // traced outline's) puts many vertices at one abscissa; the window allows for the rounding of
+  // the abscissas and for distances whose squares underflow.
+  if (limits.weld > 0) {
+    const Vec2 axis{0.54030230586813977, 0.84147098480789650};
+    thread_local std::vector<std::pair<double, std::size_t>> along;
+    along.resize(n);
+    double scale = 0;
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      along[i] = {glm::dot(hull[i], axis), i};
+      finite = finite && std::isfinite(hull[i].x) && std::isfinite(hull[i].y);
+      scale = std::max({scale, std::abs(hull[i].x), std::abs(hull[i].y)});
+    }
+    if (finite) std::sort(along.begin(), along.end());
+    // Not finite: every pair, in index order.
+    const double window =
+        finite ? 2 * limits.weld + 1e-12 * scale + 1e-140 : std::numeric_limits<double>::infinity();
+    for (std::size_t p = 0; p < n; ++p) {
+      const std::size_t i = along[p].second;
+      for (std::size_t q = p + 1; q < n && !(along[q].first - along[p].first > window); ++q) {
+        const std::size_t j = along[q].second;
+        if (glm::length(hull[i] - hull[j]) < limits.weld) {
+          want(i + n - 1);
+          want(i);
+          want(j + n - 1);
+          want(j);
+        }
       }
     }
   }
@@ -350,10 +387,21 @@ std::optional<Ring> HullFitter::fit(Ring hull) {
 
 // Removes, one at a time, the cheapest edge that mends a weld or collinearity violation.
 std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
+  // A candidate's checks look only at what removing its edge changes (see holds_component_after
+  // and OutlineDistance::apex_growth_within) once every vertex is known to pass in the hull:
+  // mending a hull of thousands of nearly collinear vertices one edge at a time, each candidate
+  // checked against every vertex and edge, took minutes.
+  std::vector<VertexDepth> depths;
+  std::vector<std::pair<std::size_t, VertexDepth>> changed;
+  bool local = false, measured = false;
+  // The error of each apex, by its coordinates: most apexes stay the same from one removal to
+  // the next (an apex depends on the four vertices round its edge).
+  std::map<std::pair<double, double>, double> errors;
   while (true) {
     if (too_small(hull)) return std::nullopt;
     std::vector<std::size_t> edges = edges_to_mend(hull, limits_);
     if (edges.empty()) return hull;
+    if (!measured) local = !whole_hull_checks_ && measure_depths(hull, depths), measured = true;
     struct Candidate {
       double error;
       std::size_t edge;
@@ -363,7 +411,14 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     for (std::size_t edge : edges) {
       std::optional<Vec2> apex = removed_edge_apex(hull, edge);
       if (!apex) continue;
-      double error = reach_.distance(*apex, bound_);
+      double error = 0;
+      if (std::isfinite(apex->x) && std::isfinite(apex->y)) {
+        const auto [known, added] = errors.try_emplace({apex->x, apex->y}, 0.0);
+        if (added) known->second = reach_.distance(*apex, bound_);
+        error = known->second;
+      } else {
+        error = reach_.distance(*apex, bound_);
+      }
       if (error <= bound_) candidates.push_back({error, edge, *apex});
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
@@ -372,7 +427,14 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     bool grown = false;
     for (const Candidate& candidate : candidates) {
       Ring next = without_edge(hull, candidate.edge, candidate.apex);
-      if (holds_component(next) && growth_within(next, hull)) {
+      // without_edge puts the apex where the edge started, or last when the edge closed the ring.
+      const std::size_t apex = candidate.edge + 1 == hull.size() ? next.size() - 1 : candidate.edge;
+      const bool passes =
+          local ? holds_component_after(next, apex, hull, candidate.edge, depths, changed) &&
+                      reach_.apex_growth_within(next, apex, hull, !edges_suffice_, bound_)
+                : holds_component(next) && growth_within(next, hull);
+      if (passes) {
+        for (const auto& [k, depth] : changed) depths[k] = depth;
         hull = std::move(next);
         grown = true;
         break;
@@ -380,6 +442,88 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     }
     if (!grown) return std::nullopt;
   }
+}
+
+bool HullFitter::measure_depths(const Ring& hull, std::vector<VertexDepth>& depths) const {
+  depths.clear();
+  const double rounding = 1e-12 * size_of(hull);
+  bool ok = true;
+  std::size_t k = 0;
+  for_each_vertex(component_, [&](Vec2 v) {
+    const auto [squared, edge_start] = squared_distance_and_edge(v, hull);
+    const double depth = std::sqrt(squared);
+    // Located even within rounding (where holds_component passes it unlocated), so that
+    // holds_component_after knows which vertices it must measure again.
+    const bool located = squared > 0;
+    const bool outside = located && locate_point(hull, v) == Location::outside;
+    if (depth > allowed_[k] * (1 + 1e-12) || (outside && depth > rounding)) ok = false;
+    depths.push_back({squared, edge_start, !outside});
+    ++k;
+  });
+  return ok;
+}
+
+bool HullFitter::holds_component_after(
+    const Ring& next, std::size_t apex, const Ring& hull, std::size_t edge,
+    const std::vector<VertexDepth>& depths,
+    std::vector<std::pair<std::size_t, VertexDepth>>& changed) const {
+  changed.clear();
+  const std::size_t m = hull.size();
+  // next keeps hull's edges but three: edge is removed, and the two beside it are extended along
+  // their lines to the apex. A vertex inside hull is no nearer to next's boundary than to hull's,
+  // so only a vertex nearest to one of those three may lie deeper in next: nearest to an extended
+  // edge at a point of the edge hull had, it lies as deep (the segment grew along its line);
+  // else it is measured again, as is every vertex outside hull (passed by rounding alone).
+  const Vec2 before = hull[(edge + m - 1) % m], from = hull[edge], to = hull[(edge + 1) % m],
+             after = hull[(edge + 2) % m];
+  auto projects_onto = [](Vec2 v, Vec2 a, Vec2 b) {
+    const Vec2 along = b - a;
+    const double t = glm::dot(v - a, along);
+    return t >= 0 && t <= glm::dot(along, along);
+  };
+  const double rounding = 1e-12 * size_of(next);
+  bool ok = true;
+  std::size_t k = 0;
+  for_each_vertex(component_, [&](Vec2 v) {
+    if (!ok) return;
+    const VertexDepth& known = depths[k];
+    const bool by_rounding = !known.not_outside;
+    const Vec2 start = known.edge_start;
+    if (!by_rounding && start != before && start != from && start != to) {
+      ++k;
+      return;
+    }
+    if (!by_rounding && start == before && projects_onto(v, before, from)) {
+      ++k;  // the extended edge still starts at before
+      return;
+    }
+    if (!by_rounding && start == to && projects_onto(v, to, after)) {
+      changed.push_back({k, {known.squared, next[apex], known.not_outside}});
+      ++k;
+      return;
+    }
+    // The nearer new edge bounds the depth from above, and a vertex within allowed of it passes:
+    // recorded with that edge, which stays in the hull until a removal changes it (then the
+    // vertex is measured again), the bound stays true. Measured over every edge otherwise, or
+    // when the vertex may lie outside hull.
+    const Vec2 at = next[apex];
+    const double to_before = point_segment_distance_squared(v, before, at);
+    const double to_after = point_segment_distance_squared(v, at, after);
+    auto [squared, edge_start] =
+        std::pair<double, Vec2>{std::min(to_before, to_after), to_after < to_before ? at : before};
+    if (by_rounding || !(std::sqrt(squared) <= allowed_[k] * (1 + 1e-12))) {
+      std::tie(squared, edge_start) = squared_distance_and_edge(v, next);
+    }
+    const double depth = std::sqrt(squared);
+    // Not outside hull: not outside next, which holds hull (its new edges lie on the lines of
+    // hull's; within rounding of them holds_component does not ask).
+    const bool outside =
+        !known.not_outside && squared > 0 && locate_point(next, v) == Location::outside;
+    if (depth > allowed_[k] * (1 + 1e-12) || (outside && depth > rounding)) ok = false;
+    changed.push_back({k, {squared, edge_start, !outside}});
+    ++k;
+  });
+  return ok;
 }
 
 namespace {

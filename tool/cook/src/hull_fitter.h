@@ -54,6 +54,15 @@ class HullFitter {
   // nullopt when no such growth is found.
   std::optional<Ring> fit(Ring hull);
 
+  // fit's first step: removes, one at a time, the cheapest edge whose removal mends a weld or
+  // collinearity violation, keeping the hull within bound and the component within its allowed
+  // depths; nullopt when a violation cannot be mended.
+  std::optional<Ring> mend_local_violations(Ring hull) const;
+
+  // For tests: mend with holds_component and growth_within over the whole hull, not only where a
+  // removal changes it (the two must agree).
+  void check_whole_hull_when_mending(bool whole) { whole_hull_checks_ = whole; }
+
   // True when every point grown adds to known (convex, inside it) is within bound.
   bool growth_within(const Ring& grown, const Ring& known) const;
 
@@ -70,8 +79,23 @@ class HullFitter {
   std::optional<Ring> seal(Ring hull) const;
 
  private:
+  // A component vertex's squared distance to the boundary of the hull being mended, as
+  // holds_component measures it; the start of the first hull edge at that distance; whether it
+  // is known not to lie outside that hull (exactly on its boundary, or located inside).
+  struct VertexDepth {
+    double squared;
+    Vec2 edge_start;
+    bool not_outside;
+  };
+  // Measures every component vertex in hull; true when every one passes holds_component.
+  bool measure_depths(const Ring& hull, std::vector<VertexDepth>& depths) const;
+  // holds_component(next), for next = hull less edge with its apex at next[apex] (see
+  // mend_local_violations) and depths from a hull that passes: measures again only the vertices
+  // the removal may move, listing what they become in changed.
+  bool holds_component_after(const Ring& next, std::size_t apex, const Ring& hull, std::size_t edge,
+                             const std::vector<VertexDepth>& depths,
+                             std::vector<std::pair<std::size_t, VertexDepth>>& changed) const;
   bool too_small(const Ring& hull) const;
-  std::optional<Ring> mend_local_violations(Ring hull) const;
   std::optional<Ring> reduce_vertex_count(const Ring& hull);
   bool may_close_within_max_verts(const Ring& hull);
   std::size_t reach_from(const Ring& hull, std::size_t i, std::size_t limit);
@@ -83,6 +107,7 @@ class HullFitter {
   const OutlineDistance& reach_;
   bool reach_is_component_;
   bool edges_suffice_;
+  bool whole_hull_checks_ = false;
   double bound_;
   EngineLimits limits_;
   // Per edge line of the hull being reduced: how many lines on its scan is known to reach (see

@@ -386,30 +386,41 @@ bool OutlineDistance::square_inside(Vec2 centre, double half) const {
   return !crossed;
 }
 
+bool OutlineDistance::new_part_within(Vec2 a, Vec2 b, const Ring& known, double tau) const {
+  const Vec2 v = b - a;
+  const Interval old = clip_to_convex(a, v, known);
+  if (old.empty() || old.high - old.low < 1e-9) return segment_within(a, b, tau);
+  // The part inside known is not checked again; the new parts are taken a little long, so that
+  // rounding never skips a new point.
+  if (old.low > 1e-12 && !segment_within(a, a + v * std::min(old.low + 1e-9, 1.0), tau)) {
+    return false;
+  }
+  return !(old.high < 1 - 1e-12) || segment_within(a + v * std::max(old.high - 1e-9, 0.0), b, tau);
+}
+
 bool OutlineDistance::new_edges_within(const Ring& grown, const Ring& known, double tau) const {
-  std::size_t n = grown.size();
-  if (n == 0) return true;
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec2 a = grown[i], b = grown[(i + 1) % n], v = b - a;
-    Interval old = clip_to_convex(a, v, known);
-    if (old.empty() || old.high - old.low < 1e-9) {
-      if (!segment_within(a, b, tau)) return false;
-      continue;
-    }
-    // The part inside known is not checked again; the new parts are taken a little long, so
-    // that rounding never skips a new point.
-    if (old.low > 1e-12 && !segment_within(a, a + v * std::min(old.low + 1e-9, 1.0), tau)) {
-      return false;
-    }
-    if (old.high < 1 - 1e-12 && !segment_within(a + v * std::max(old.high - 1e-9, 0.0), b, tau)) {
-      return false;
-    }
+  for (std::size_t i = 0, n = grown.size(); i < n; ++i) {
+    if (!new_part_within(grown[i], grown[(i + 1) % n], known, tau)) return false;
   }
   return true;
 }
 
 bool OutlineDistance::growth_within(const Ring& grown, const Ring& known, double tau) const {
-  if (!new_edges_within(grown, known, tau)) return false;
+  return new_edges_within(grown, known, tau) && cells_beyond_within(grown, grown, known, tau);
+}
+
+bool OutlineDistance::apex_growth_within(const Ring& grown, std::size_t apex, const Ring& known,
+                                         bool with_cells, double tau) const {
+  const std::size_t n = grown.size();
+  const Vec2 before = grown[(apex + n - 1) % n], at = grown[apex], after = grown[(apex + 1) % n];
+  if (!new_part_within(before, at, known, tau) || !new_part_within(at, after, known, tau)) {
+    return false;
+  }
+  return !with_cells || cells_beyond_within(grown, Ring{at}, known, tau);
+}
+
+bool OutlineDistance::cells_beyond_within(const Ring& grown, const Ring& candidates,
+                                          const Ring& known, double tau) const {
   // Only beyond known's edges is the area new: grown on the outer side of each edge's line.
   int budget = kCellBudget;
   if (known.size() < 3) return cells_within(grown, known, tau, budget);
@@ -421,7 +432,7 @@ bool OutlineDistance::growth_within(const Ring& grown, const Ring& known, double
     double length = glm::length(edge);
     if (length == 0) continue;
     double beyond = 0;
-    for (Vec2 p : grown) beyond = std::max(beyond, -cross(edge, p - a) / length);
+    for (Vec2 p : candidates) beyond = std::max(beyond, -cross(edge, p - a) / length);
     if (beyond <= 1e-12 * scale) continue;
     if (!cells_within(clip_outside(grown, a, edge), known, tau, budget)) return false;
   }

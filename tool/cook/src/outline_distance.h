@@ -48,6 +48,13 @@ class OutlineDistance {
   // polygon that needs more than a few thousand cells is refused.
   bool growth_within(const Ring& grown, const Ring& known, double tau) const;
 
+  // For grown made from known by moving one vertex out to an apex on the lines of its edges
+  // (and dropping its successor: a hull edge removed): its two edges at that apex as
+  // new_edges_within checks them, and with_cells, the area as growth_within proves it. The other
+  // edges are known's, and no other vertex lies beyond a line of known.
+  bool apex_growth_within(const Ring& grown, std::size_t apex, const Ring& known, bool with_cells,
+                          double tau) const;
+
  private:
   using Edge = EdgeSpan;
 
@@ -60,6 +67,12 @@ class OutlineDistance {
   // of segment ab.
   template <typename Visit>
   void for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
+  // new_edges_within for one edge ab of grown.
+  bool new_part_within(Vec2 a, Vec2 b, const Ring& known, double tau) const;
+  // growth_within's proof by cells, for every edge of known that a point of candidates (those of
+  // grown that may lie beyond one) lies beyond.
+  bool cells_beyond_within(const Ring& grown, const Ring& candidates, const Ring& known,
+                           double tau) const;
   // growth_within's proof by cells of the convex region, less known.
   bool cells_within(const Ring& region, const Ring& known, double tau, int& budget) const;
   // True when no boundary edge meets the square and its centre is inside the outline.
