@@ -116,6 +116,26 @@ std::vector<CookedPiece> decompose_at(const Region& component, double tau) {
   return pieces;
 }
 
+// What a HullFitter of piece at τ reads (it keeps references): its vertices' allowed depths, the
+// distances to its component, and whether its pockets' edges suffice to prove growth.
+struct FitterInputs {
+  FitterInputs(const CookedPiece& piece, double tau)
+      : piece(piece),
+        tau(tau),
+        allowed(allowed_depths(piece.component, piece.hull, tau)),
+        reach({&piece.component}),
+        edges_suffice(pockets_within(piece.component, piece.hull, tau)) {}
+  HullFitter fitter(const EngineLimits& limits,
+                    HullFitter::Reach kind = HullFitter::Reach::component) const {
+    return HullFitter(piece.component, allowed, reach, kind, edges_suffice, tau, limits);
+  }
+  const CookedPiece& piece;
+  double tau;
+  std::vector<double> allowed;
+  OutlineDistance reach;
+  bool edges_suffice;
+};
+
 // The contract of issue 16 on pieces that partition outline.
 void expect_pieces_contract(const std::vector<CookedPiece>& pieces,
                             const std::vector<Region>& outline, double tau,
@@ -293,13 +313,10 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
         const EngineLimits limits{max_verts, 0.005};
         for (const CookedPiece& piece : decompose_at(Region{star, {}}, tau)) {
           if (piece.hull.size() <= max_verts) continue;
-          const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
-          const OutlineDistance reach({&piece.component});
-          const bool edges_suffice = pockets_within(piece.component, piece.hull, tau);
-          HullFitter with_shortcut(piece.component, allowed, reach, HullFitter::Reach::component,
-                                   edges_suffice, tau, limits);
-          HullFitter query_only(piece.component, allowed, reach, HullFitter::Reach::outline,
-                                edges_suffice, tau, limits);
+          const FitterInputs inputs(piece, tau);
+          const OutlineDistance& reach = inputs.reach;
+          HullFitter with_shortcut = inputs.fitter(limits, HullFitter::Reach::component);
+          HullFitter query_only = inputs.fitter(limits, HullFitter::Reach::outline);
           std::uint64_t before = reach.distance_queries();
           const std::optional<Ring> fast = with_shortcut.fit(piece.hull);
           queries_with_shortcut += reach.distance_queries() - before;
@@ -332,10 +349,9 @@ TEST(EngineLimits, Issue17_HullThatNoEightLinesCloseIsRefusedAfterOneGreedyChain
   const EngineLimits limits{8, 0.005};
   // Eight lines round a radius-100 circle reach 100 / cos(22.5°) - 100 ≈ 8.2 out: beyond τ 2.
   const double tau = 2;
-  const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
-  const OutlineDistance reach({&piece.component});
-  HullFitter fitter(piece.component, allowed, reach, HullFitter::Reach::component,
-                    pockets_within(piece.component, piece.hull, tau), tau, limits);
+  const FitterInputs inputs(piece, tau);
+  const OutlineDistance& reach = inputs.reach;
+  HullFitter fitter = inputs.fitter(limits);
   const std::uint64_t before = reach.distance_queries();
   EXPECT_FALSE(fitter.fit(piece.hull).has_value());
   // One query per corner, then one per line scanned by the ten lines of one greedy chain (about
@@ -404,30 +420,25 @@ TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksD
       std::vector<CookedPiece> pieces = decompose_at(Region{shape, {}}, tau);
       pieces.push_back(convex_piece_of(shape));
       for (const CookedPiece& piece : pieces) {
+        const FitterInputs inputs(piece, tau);
         for (double weld : {0.005, 0.05, 0.4}) {
-          {
-            const EngineLimits limits{0, weld};
-            const std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau);
-            const OutlineDistance reach({&piece.component});
-            const bool edges_suffice = pockets_within(piece.component, piece.hull, tau);
-            HullFitter local(piece.component, allowed, reach, HullFitter::Reach::component,
-                             edges_suffice, tau, limits);
-            HullFitter whole(piece.component, allowed, reach, HullFitter::Reach::component,
-                             edges_suffice, tau, limits);
-            whole.check_whole_hull_when_mending(true);
-            const std::optional<Ring> by_change = local.mend_local_violations(piece.hull);
-            const std::optional<Ring> by_whole = whole.mend_local_violations(piece.hull);
-            ++compared;
-            ASSERT_EQ(by_change.has_value(), by_whole.has_value())
-                << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
-            if (!by_change) {
-              ++refused;
-              continue;
-            }
-            EXPECT_EQ(*by_change, *by_whole)
-                << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
-            if (*by_change != piece.hull) ++changed;
+          // Every weld and collinearity violation mended, whatever the vertex count.
+          const EngineLimits limits{0, weld};
+          HullFitter local = inputs.fitter(limits);
+          HullFitter whole = inputs.fitter(limits);
+          whole.check_whole_hull_when_mending(true);
+          const std::optional<Ring> by_change = local.mend_local_violations(piece.hull);
+          const std::optional<Ring> by_whole = whole.mend_local_violations(piece.hull);
+          ++compared;
+          ASSERT_EQ(by_change.has_value(), by_whole.has_value())
+              << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          if (!by_change) {
+            ++refused;
+            continue;
           }
+          EXPECT_EQ(*by_change, *by_whole)
+              << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          if (*by_change != piece.hull) ++changed;
         }
       }
     }
