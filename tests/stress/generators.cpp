@@ -374,6 +374,69 @@ void remove_near_touches(Ring& ring) {
   }
 }
 
+// Hundreds to thousands of nearly collinear vertices: a circle (its radii jittered or not) or a
+// rectangle whose sides bulge out by a hair, mostly with a few dense round holes. Their hulls keep
+// every vertex, which the engine limits mend and reduce one edge at a time (issue 17: a 4000-vertex
+// square took minutes).
+Shape dense(Random& random) {
+  Shape shape;
+  const int count = random.integer(300, 1500);
+  Ring outer;
+  double half_width = 0, half_height = 0, feature = 0;
+  if (random.chance(0.5)) {
+    const double radius = random.uniform(5, 200);
+    const double jitter = random.pick(std::vector<double>{0.0, 1e-9, 1e-6}) * radius;
+    for (int i = 0; i < count; ++i) {
+      const double angle = 2 * kPi * i / count;
+      outer.push_back((radius + jitter * random.uniform(-1, 1)) *
+                      Vec2{std::cos(angle), std::sin(angle)});
+    }
+    half_width = half_height = radius / std::sqrt(2.0);
+    feature = jitter;
+    shape.description << count << "-vertex circle radius " << radius << ", jitter " << jitter;
+  } else {
+    half_width = random.uniform(2.5, 100), half_height = random.uniform(2.5, 100);
+    const double bulge =
+        random.pick(std::vector<double>{1e-9, 1e-6, 1e-3}) * std::min(half_width, half_height);
+    const Vec2 corners[4] = {{-half_width, -half_height},
+                             {half_width, -half_height},
+                             {half_width, half_height},
+                             {-half_width, half_height}};
+    const int per_side = count / 4;
+    for (int c = 0; c < 4; ++c) {
+      const Vec2 from = corners[c], to = corners[(c + 1) % 4];
+      const Vec2 outward = glm::normalize(Vec2{to.y - from.y, from.x - to.x});
+      for (int i = 0; i < per_side; ++i) {
+        const double t = static_cast<double>(i) / per_side;
+        outer.push_back(from + (to - from) * t + outward * (bulge * std::sin(kPi * t)));
+      }
+    }
+    feature = bulge;
+    shape.description << 2 * half_width << " x " << 2 * half_height << " rectangle, " << per_side
+                      << " vertices a side bulging " << bulge;
+  }
+  // Holes side by side along x, inside the box the outer boundary holds.
+  std::vector<Ring> holes;
+  double thinnest = std::min(half_width, half_height);
+  if (random.chance(0.95)) {
+    const int count_of_holes = random.integer(1, 3);
+    const double slot = 2 * half_width / count_of_holes;
+    const double radius = std::min(slot, 2 * half_height) * random.uniform(0.15, 0.4);
+    const int sides = random.integer(60, 600);
+    for (int h = 0; h < count_of_holes; ++h) {
+      const Vec2 center{-half_width + slot * (h + 0.5), 0.0};
+      holes.push_back(reversed(regular_polygon(center, radius, sides, random.uniform(0, kPi))));
+    }
+    thinnest = std::min({half_height - radius, slot / 2 - radius, radius});
+    shape.description << ", " << count_of_holes << " holes of " << sides << " sides, radius "
+                      << radius;
+  }
+  shape.regions.push_back({outer, holes});
+  // The placement's rounding keeps the jitter or bulge.
+  shape.thinnest = feature > 0 ? std::min(thinnest, feature) : thinnest;
+  return shape;
+}
+
 // Random points (distinct, on a decimal grid of 1/100 or 1/1000, or anywhere) joined in random
 // order, then untangled by 2-opt: while two edges meet (exactly, touching included), the path
 // between them is reversed. Some edges then get vertices inserted at a third or a half of their
@@ -461,9 +524,9 @@ double round_to(double x, double step) {
 }  // namespace
 
 const std::vector<Family>& all_families() {
-  static const std::vector<Family> families{Family::thin_wall,    Family::grid, Family::row,
-                                            Family::ring,         Family::star, Family::button,
-                                            Family::random_simple};
+  static const std::vector<Family> families{Family::thin_wall,     Family::grid, Family::row,
+                                            Family::ring,          Family::star, Family::button,
+                                            Family::random_simple, Family::dense};
   return families;
 }
 
@@ -483,6 +546,8 @@ const char* family_name(Family family) {
       return "button";
     case Family::random_simple:
       return "random_simple";
+    case Family::dense:
+      return "dense";
   }
   return "?";
 }
@@ -538,6 +603,9 @@ GeneratedCase generate_case(Family family, std::uint64_t seed) {
       break;
     case Family::random_simple:
       shape = random_simple(random);
+      break;
+    case Family::dense:
+      shape = dense(random);
       break;
   }
   const Placement placement = draw_placement(random, shape.thinnest);

@@ -24,6 +24,8 @@ enum class Family {
   button,     // a UI button whose few holes nearly fill it (walls 0.2-1.5, notched holes)
   random_simple,  // random points untangled into a simple polygon, on a decimal grid, with
                   // vertices inserted along edges: nearly collinear in binary; no holes
+  dense,  // 300-1500 nearly collinear vertices: a jittered circle or a rectangle bulging out by
+          // 1e-9 to 1e-3 of its size, mostly with 1-3 round holes of 60-600 sides
 };
 
 const std::vector<Family>& all_families();

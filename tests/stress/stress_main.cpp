@@ -158,14 +158,15 @@ std::vector<CookCase> image_cooks(const Options& options,
   return image_cooks(options.measures_given ? options.measures : std::vector{Measure::h1}, family);
 }
 
-// Decomposes regions under every measure and tau, and cooks file at every tau (polygon_cook).
-template <typename Decompose, typename Cook>
+// Decomposes regions under every measure and tau, and cooks file at every tau (polygon_cook)
+// that cooks_at allows.
+template <typename Decompose, typename Cook, typename CooksAt>
 void run_polygon(Tally& tally, const Options& options, Decompose decompose, Cook cook,
-                 bool& failed) {
+                 CooksAt cooks_at, bool& failed) {
   for (Measure measure : options.measures) {
     for (double tau : options.taus) {
       record(tally, decompose(measure, tau), options, failed);
-      record(tally, cook(polygon_cook(tau, measure)), options, failed);
+      if (cooks_at(tau)) record(tally, cook(polygon_cook(tau, measure)), options, failed);
     }
   }
 }
@@ -183,7 +184,8 @@ bool run_inputs(const Options& options, Tally& tally) {
             return run_polygon_case(input.stem().string(), regions, input.string(), measure, tau,
                                     options.out);
           },
-          [&](const CookCase& cook) { return run_sprite_case(input, cook); }, failed);
+          [&](const CookCase& cook) { return run_sprite_case(input, cook); },
+          [](double) { return true; }, failed);
     } else {
       for (const CookCase& cook : image_cooks(options)) {
         record(tally, run_sprite_case(input, cook), options, failed);
@@ -228,7 +230,7 @@ int run(const Options& options) {
           return run_polygon_case(generated, measure, tau, options.out);
         },
         [&](const CookCase& cook) { return run_polygon_cook_case(generated, cook, options.out); },
-        case_failed);
+        [&](double tau) { return cooks_polygon_at(family, tau); }, case_failed);
     tally.failed_cases += case_failed;
     any_failed = any_failed || case_failed;
   }

@@ -160,6 +160,8 @@ CookCase polygon_cook(double tau, Measure measure) {
   return cook;
 }
 
+bool cooks_polygon_at(Family family, double tau) { return family != Family::dense || tau > 0; }
+
 CaseOutcome run_polygon_case(const GeneratedCase& generated, Measure measure, double tau,
                              const std::filesystem::path& failure_dir) {
   const std::string family = family_name(generated.family);

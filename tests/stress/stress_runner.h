@@ -65,6 +65,12 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
 // apart at a tolerance of 0; the pieces are convex and every vertex stays, however close).
 CookCase polygon_cook(double tau, Measure measure);
 
+// Whether the stress cooks polygons of family at tau: all but the dense family at τ 0. Split for
+// --max-verts, a convex piece whose side is hundreds of nearly collinear vertices leaves pieces
+// along that side thinner than the bundle's grid, which the writer refuses (exit 3) or, among
+// slivers at the rounding, the constrainer (exit 2): a known limit, in the README's exit codes.
+bool cooks_polygon_at(Family family, double tau);
+
 // Writes the case's regions as failure_dir/FAMILY-SEED.poly, cooks that file (with the engine
 // limits, as `hullcook cook` does) and checks the cooked asset; the file is kept only when the
 // case fails.
