@@ -606,8 +606,11 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
 
 // The greedy chain from edge 0, one line past max_verts: a chain of k lines from any start
 // means one of at most k + 1 from edge 0 (its lines stay ahead of that chain's, and one more
-// wraps round). When that one needs more, no start closes within max_verts. Also prepares the
-// scans for reduce_vertex_count.
+// wraps round). When that one needs more, no start closes within max_verts. The argument takes
+// two lines that meet within bound to stay so when either moves towards the other, as the scans
+// already take it for the later one (they stop at the first line beyond); a component pocket
+// that breaks it can only make the piece halved where it could have been reduced. Also prepares
+// the scans for reduce_vertex_count.
 bool HullFitter::may_close_within_max_verts(const Ring& hull) {
   const std::size_t m = hull.size();
   // What is known of the lines after each edge line: a prefix of them (the scans stop at the
