@@ -144,7 +144,8 @@ std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& lim
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
       along[i] = {glm::dot(hull[i], axis), i};
-      finite = finite && std::isfinite(hull[i].x) && std::isfinite(hull[i].y);
+      // The abscissa too: near the largest double it may overflow where the coordinates do not.
+      finite = finite && std::isfinite(along[i].first);
       scale = std::max({scale, std::abs(hull[i].x), std::abs(hull[i].y)});
     }
     if (finite) std::sort(along.begin(), along.end());
@@ -352,15 +353,6 @@ bool HullFitter::too_small(const Ring& hull) const {
 
 std::optional<Ring> HullFitter::fit(Ring hull) {
   const Ring given = hull;
-  // Mending and reducing keep some of the given hull's edge lines and drop the others, and the
-  // lines a polygon they make keeps would close a chain of the given hull's: when no chain of
-  // max_verts lines closes round it, neither step can succeed. Mending a hull of thousands of
-  // nearly collinear vertices one edge at a time (a 2000-vertex circle) took tens of seconds,
-  // before the reduction found no chain short enough.
-  if (limits_.max_verts != 0 && hull.size() > limits_.max_verts &&
-      !may_close_within_max_verts(hull)) {
-    return std::nullopt;
-  }
   // Reducing the vertex count creates new apexes, which may need welding again.
   for (int round = 0; round < 4; ++round) {
     std::optional<Ring> mended = mend_local_violations(std::move(hull));
@@ -609,8 +601,10 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
 // wraps round). When that one needs more, no start closes within max_verts. The argument takes
 // two lines that meet within bound to stay so when either moves towards the other, as the scans
 // already take it for the later one (they stop at the first line beyond); a component pocket
-// that breaks it can only make the piece halved where it could have been reduced. Also prepares
-// the scans for reduce_vertex_count.
+// that breaks it can only make the piece halved where it could have been reduced. Rounding
+// could break it among nearly parallel lines: the hull is mended first (no turn below a tenth of
+// the weld remains), and without a weld the bound is used only where every edge and turn is
+// above a millionth of the hull's size. Also prepares the scans for reduce_vertex_count.
 bool HullFitter::may_close_within_max_verts(const Ring& hull) {
   const std::size_t m = hull.size();
   // What is known of the lines after each edge line: a prefix of them (the scans stop at the
@@ -622,6 +616,16 @@ bool HullFitter::may_close_within_max_verts(const Ring& hull) {
   outside_by_rounding_ = 2e-12 * size_of(hull);
   corner_reach_.resize(m);
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
+  // Without a weld, edges or turns too small for their lines' meeting points to be computed
+  // reliably may remain, where the argument can fail in rounding: then every start is tried.
+  if (!(limits_.weld > 0)) {
+    const double least = 1e-6 * size_of(hull);
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!(glm::length(hull[(k + 1) % m] - hull[k]) >= least && turn_height(hull, k) >= least)) {
+        return true;
+      }
+    }
+  }
   std::size_t current = 0, lines = 1;
   while (lines <= limits_.max_verts + 1) {
     current += reach_from(hull, current, m - current);
