@@ -16,15 +16,8 @@ namespace {
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
-double distance_to_ring(Vec2 p, const Ring& ring) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    best = std::min(best, point_segment_distance_squared(p, ring[i], ring[i + 1 == n ? 0 : i + 1]));
-  }
-  return std::sqrt(best);
-}
-
-// The square of distance_to_ring, and the start of the first edge at that distance.
+// The square of the distance from p to the ring's boundary, and the start of the first edge at
+// that distance.
 std::pair<double, Vec2> squared_distance_and_edge(Vec2 p, const Ring& ring) {
   double best = std::numeric_limits<double>::infinity();
   std::size_t at = 0;
@@ -32,7 +25,11 @@ std::pair<double, Vec2> squared_distance_and_edge(Vec2 p, const Ring& ring) {
     const double squared = point_segment_distance_squared(p, ring[i], ring[i + 1 == n ? 0 : i + 1]);
     if (squared < best) best = squared, at = i;
   }
-  return {best, ring[at]};
+  return {best, ring.empty() ? Vec2{} : ring[at]};
+}
+
+double distance_to_ring(Vec2 p, const Ring& ring) {
+  return std::sqrt(squared_distance_and_edge(p, ring).first);
 }
 
 double size_of(const Ring& ring) {
