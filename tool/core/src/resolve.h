@@ -8,7 +8,8 @@
 
 namespace hullcook::detail {
 
-// Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8.
+// Algorithm 4.2 for a notch r of ∂P0: the best valid diagonal by Eq. 8. None when every valid
+// diagonal grazes a vertex or cuts off a sliver and the notch is no deeper than the sliver width.
 std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
                                                        const OuterConcavity& concavity,
                                                        std::size_t r,

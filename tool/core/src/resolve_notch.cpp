@@ -136,7 +136,9 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
           others, scores_before, [&](const ScoredVertex& c) { return is_valid_cut(c.index); })) {
     return split_outer(region, r, chosen->index, concavity, inherits_values(settings), hints);
   }
-  if (sliver_cut)
+  // A notch no deeper than the sliver width is rounding, not shape (the contract measures
+  // concavity with that slack): it is left rather than cut off as a sliver.
+  if (sliver_cut && concavity.value > sliver_floor_width)
     return split_outer(region, r, *sliver_cut, concavity, inherits_values(settings), hints);
   return std::nullopt;
 }

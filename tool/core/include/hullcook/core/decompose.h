@@ -20,7 +20,9 @@ std::optional<Measure> parse_measure(std::string_view name);
 const char* measure_name(Measure measure);
 
 struct DecomposeSettings {
-  double tau = 0.0;  // [input units] concavity tolerance; 0 gives an exact convex decomposition
+  // [input units] concavity tolerance; 0 gives an exact convex decomposition, but for a notch no
+  // deeper than a billionth of the region's size (rounding) where every cut would leave a sliver
+  double tau = 0.0;
   Measure measure = Measure::h1;
   double sc = 0.1;  // Eq. 8 weight of the concavity of the cut's far end [1/units]; finite, >= 0
   double sd = 1.0;  // Eq. 8 weight of the cut's length [unitless]; finite, > 0
