@@ -203,13 +203,22 @@ FarthestPoint farthest_from_target(const Ring& domain, const std::vector<Region>
     for (std::size_t i = 0; i < cell.segments.size(); ++i) {
       if (distance[i] <= keep) kept.push_back(cell.segments[i]);
     }
-    const Vec2 a = cell.corner[0], b = cell.corner[1], d = cell.corner[2];
-    const Vec2 ab = (a + b) * 0.5, bd = (b + d) * 0.5, da = (d + a) * 0.5;
+    // Halved across its longest edge: a long thin cell (a fan triangle of a long hull, along the
+    // outline) needs cells of about the bound's size along its length only, where quartering it
+    // made as many across it (a 500 units long piece at tau 0.5 needed over 200,000 cells).
+    int longest = 0;
+    double longest_length = -1;
+    for (int i = 0; i < 3; ++i) {
+      const Vec2 edge = cell.corner[(i + 1) % 3] - cell.corner[i];
+      const double edge_length = std::hypot(edge.x, edge.y);
+      if (edge_length > longest_length) longest = i, longest_length = edge_length;
+    }
+    const Vec2 a = cell.corner[longest], b = cell.corner[(longest + 1) % 3],
+               d = cell.corner[(longest + 2) % 3];
+    const Vec2 middle = (a + b) * 0.5;
     const double upper = here + radius;
-    queue.push({upper, {a, ab, da}, kept});
-    queue.push({upper, {ab, b, bd}, kept});
-    queue.push({upper, {da, bd, d}, kept});
-    queue.push({upper, {ab, bd, da}, std::move(kept)});
+    queue.push({upper, {a, middle, d}, kept});
+    queue.push({upper, {middle, b, d}, std::move(kept)});
   }
   return result;
 }

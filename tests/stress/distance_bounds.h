@@ -36,10 +36,10 @@ struct FarthestPoint {
 };
 
 // Decides whether every point of the convex polygon domain (counter-clockwise) is within limit of
-// the filled target (regions, holes excluded), by subdividing the domain's fan triangles into
-// four: a triangle is proven by the 1-Lipschitz bound from its centroid, by the convexity of the
-// distance to one target segment (its maximum over the triangle is at a corner), by lying inside
-// the target, or, with its centroid inside, by bounding the parts of it right of each target
+// the filled target (regions, holes excluded), by halving the domain's fan triangles across their
+// longest edge: a triangle is proven by the 1-Lipschitz bound from its centroid, by the convexity
+// of the distance to one target segment (its maximum over the triangle is at a corner), by lying
+// inside the target, or, with its centroid inside, by bounding the parts of it right of each target
 // segment that meets it (where alone it can leave the target); a centroid farther than limit is a
 // witness, and the search goes on a little for the farthest (to a thousandth of its distance).
 // Triangles smaller than resolution are taken as proven (their points are within limit +

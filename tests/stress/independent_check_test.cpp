@@ -171,6 +171,25 @@ TEST(IndependentCheck, AGrownHullIsMeasuredEverywhere) {
   EXPECT_EQ(check({region}, grown, options).counts.count("tau.unproven"), 1u);
 }
 
+// scripts/stress, dense family (seeds 20261235, 20261270): a hull thousands of units along a
+// side of hundreds of vertices was within tau of the outline, but quartering its long fan
+// triangles made as many cells across them as along, and 200,000 cells proved nothing
+// ("unproven"). Halving across the longest edge proves a 4000 long strip in 70,000 cells
+// (quartering: 414,000).
+TEST(IndependentCheck, ALongHullAlongAWavyOutlineIsProvenWithinTheBudget) {
+  Ring outer{{0, 0}, {4000, 0}};
+  for (int k = 800; k >= 0; --k) outer.push_back({5.0 * k, k % 2 == 0 ? 10.0 : 9.8});
+  const Region region{outer, {}};
+  const Output grown{{region}, {rectangle({0, 0, 4000, 10.3})}};
+  CheckOptions options = at_tau(1.0);
+  options.exact_hulls = false;
+  const CheckReport report = check({region}, grown, options);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  // and a hull that strays farther is still found
+  const Output far{{region}, {rectangle({0, 0, 4000, 11.2})}};
+  EXPECT_EQ(check({region}, far, options).counts.count("tau.hull_to_component"), 1u);
+}
+
 TEST(IndependentCheck, CookedHullsKeepTheEngineRules) {
   const Region region{rectangle({0, 0, 4, 4}), {}};
   CheckOptions options = at_tau(0.5);
