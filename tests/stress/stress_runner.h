@@ -65,10 +65,11 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
 // apart at a tolerance of 0; the pieces are convex and every vertex stays, however close).
 CookCase polygon_cook(double tau, Measure measure);
 
-// Whether the stress cooks polygons of family at tau: all but the dense family at τ 0. Split for
-// --max-verts, a convex piece whose side is hundreds of nearly collinear vertices leaves pieces
-// along that side thinner than the bundle's grid, which the writer refuses (exit 3) or, among
-// slivers at the rounding, the constrainer (exit 2): a known limit, in the README's exit codes.
+// Whether the stress cooks polygons of family at tau: all but the dense family at τ 0. A side of
+// hundreds of nearly collinear vertices leaves pieces along it thinner than the bundle's grid
+// (the strips between the notches that rounding leaves there, which τ 0 must cut, or the parts
+// of a convex piece split for --max-verts), which the writer refuses (exit 3) or, among slivers
+// at the rounding, the constrainer (exit 2): a known limit, in the README's exit codes.
 bool cooks_polygon_at(Family family, double tau);
 
 // Writes the case's regions as failure_dir/FAMILY-SEED.poly, cooks that file (with the engine
