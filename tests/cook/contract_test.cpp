@@ -554,6 +554,52 @@ TEST(Contract, SidesOfNearlyCollinearVerticesCutIntoTrianglesAreAnInputError) {
   std::filesystem::remove(file);
 }
 
+// A review of the τ 0 rule for notches no deeper than the contract's slack (left where only
+// slivers resolve them): a 12-vertex piece of a rectangle's side, 25 long and 4e-3 wide, 1e6 from
+// the origin, keeps such a notch at τ 0 and its hull of 10 vertices exceeds --max-verts 8; the
+// constrainer found no convex piece to halve and threw an internal error (exit 4). It is the
+// input's (no split of it avoids slivers): an InputError that says what to raise. With
+// --max-verts 12 it cooks within the contract.
+TEST(Contract, NotchWithinTheSlackOverMaxVertsIsAnInputError) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "hullcook_contract_notch_far_from_origin.poly";
+  {
+    std::ofstream out(file);
+    out << R"(1
+12 out
+1000571.298921 999632.0930369999
+1000571.299245 999634.165752
+1000571.2995679999 999636.238467
+1000571.2998909999 999638.311182
+1000571.3002139999 999640.383898
+1000571.3005359999 999642.4566129999
+1000571.300858 999644.5293279999
+1000571.301179 999646.6020439999
+1000571.3015 999648.674759
+1000571.3021399999 999652.820189
+1000571.3024599999 999654.8929049999
+1000571.3027789999 999656.9656199999
+1 2 3 4 5 6 7 8 9 10 11 12
+)";
+  }
+  Settings settings;
+  settings.tau = Tolerance{0.0, false};
+  settings.weld = 0.0;
+  try {
+    cook({file}, settings);
+    ADD_FAILURE() << "cooked into hulls of at most 8 vertices";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("raise --max-verts or --tau"), std::string::npos)
+        << error.what();
+  }
+  settings.max_verts = 12;
+  CookedAsset asset;
+  ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0));
+  const std::vector<std::string> violations = violations_of(asset, EngineLimits{12, 0.0});
+  EXPECT_TRUE(violations.empty()) << listed(violations);
+  std::filesystem::remove(file);
+}
+
 // A random outline 1e-4 wide, 1e5 from the origin, with seven small holes: the contract's slack
 // (1e-9 of a thousandth of the largest coordinate, 1e-7) is a thousandth of its width. At τ 0
 // the decomposition had no cut but one leaving a triangle between two holes and the outer

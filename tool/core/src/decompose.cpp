@@ -120,7 +120,7 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     }
     // A notch of a simple polygon always has a diagonal, and a hole always a slab cut: a node kept
     // whole here would break τ silently (issue 16), so it is an internal error instead.
-    if (!parts && witness.hole < 0 && !(e.outer.value > detail::sliver_floor_width)) {
+    if (!parts && witness.hole < 0 && detail::is_rounding_deep(e.outer.value)) {
       // Only slivers resolve the notch, and it is no deeper than they are wide (see
       // resolve_notch): the node stays a piece, within the contract's slack of its hull.
       spare_hints.push_back(std::move(child_hints.first));

@@ -55,6 +55,11 @@ inline double sliver_width(double length) {
   return std::max(kSliverAreaFraction * length, sliver_floor_width);
 }
 
+// Whether a notch this deep is rounding rather than shape, to be left where only sliver cuts
+// resolve it: no deeper than the sliver width less a thousandth, a margin for the contract, which
+// allows a piece that width as slack and measures its notch afresh (rounding differently).
+inline bool is_rounding_deep(double depth) { return !(depth > 0.999 * sliver_floor_width); }
+
 // Ring index steps without a division (i < n).
 inline std::size_t next_index(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
 inline std::size_t prev_index(std::size_t i, std::size_t n) { return i == 0 ? n - 1 : i - 1; }

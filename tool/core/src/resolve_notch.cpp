@@ -137,8 +137,8 @@ std::optional<std::pair<Region, Region>> resolve_notch(const Region& region,
     return split_outer(region, r, chosen->index, concavity, inherits_values(settings), hints);
   }
   // A notch no deeper than the sliver width is rounding, not shape (the contract measures
-  // concavity with that slack): it is left rather than cut off as a sliver.
-  if (sliver_cut && concavity.value > sliver_floor_width)
+  // concavity with that width as slack): it is left rather than cut off as a sliver.
+  if (sliver_cut && !is_rounding_deep(concavity.value))
     return split_outer(region, r, *sliver_cut, concavity, inherits_values(settings), hints);
   return std::nullopt;
 }

@@ -21,7 +21,8 @@ const char* measure_name(Measure measure);
 
 struct DecomposeSettings {
   // [input units] concavity tolerance; 0 gives an exact convex decomposition, but for a notch no
-  // deeper than a billionth of the region's size (rounding) where every cut would leave a sliver
+  // deeper than the sliver width (a billionth of the region's size, or of a thousandth of its
+  // largest coordinate) where every valid cut grazes a vertex or leaves a sliver
   double tau = 0.0;
   Measure measure = Measure::h1;
   double sc = 0.1;  // Eq. 8 weight of the concavity of the cut's far end [1/units]; finite, >= 0
@@ -86,7 +87,8 @@ class DecompositionTree {
   Measure measure_ = Measure::h1;
 };
 
-// Decomposes one cleaned region (see clean_and_validate) until every piece has concavity <= tau.
+// Decomposes one cleaned region (see clean_and_validate) until every piece has concavity <= tau,
+// or no more than the sliver width for a notch that only sliver cuts resolve (see tau above).
 // Deterministic. Throws std::invalid_argument on a negative or NaN tau, or on sc or sd out of
 // their ranges (Eq. 8's scores must be numbers to be ordered).
 DecompositionTree decompose(const Region& region, const DecomposeSettings& settings);
