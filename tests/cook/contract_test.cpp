@@ -52,6 +52,19 @@ std::string listed(const std::vector<std::string>& violations) {
   return text.empty() ? " none" : text;
 }
 
+// Expects the cook of file to be refused as the input's, with the advice to raise --max-verts or
+// τ (no split of a piece avoids slivers). refused: what the cook must not have made.
+void expect_refused_for_slivers(const std::filesystem::path& file, const Settings& settings,
+                                const std::string& refused) {
+  try {
+    cook({file}, settings);
+    ADD_FAILURE() << "cooked " << refused;
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("raise --max-verts or --tau"), std::string::npos)
+        << error.what();
+  }
+}
+
 // Whether a violation names piece (0-based here, 1-based in the message) and says problem.
 bool names(const std::vector<std::string>& violations, std::size_t piece,
            const std::string& problem) {
@@ -544,13 +557,7 @@ TEST(Contract, SidesOfNearlyCollinearVerticesCutIntoTrianglesAreAnInputError) {
   const std::vector<std::string> violations = violations_of(asset, EngineLimits{8, 0.0});
   EXPECT_TRUE(violations.empty()) << listed(violations);
   settings.max_verts = 3;
-  try {
-    cook({file}, settings);
-    ADD_FAILURE() << "cooked into triangles";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("raise --max-verts or --tau"), std::string::npos)
-        << error.what();
-  }
+  expect_refused_for_slivers(file, settings, "into triangles");
   std::filesystem::remove(file);
 }
 
@@ -585,13 +592,7 @@ TEST(Contract, NotchWithinTheSlackOverMaxVertsIsAnInputError) {
   Settings settings;
   settings.tau = Tolerance{0.0, false};
   settings.weld = 0.0;
-  try {
-    cook({file}, settings);
-    ADD_FAILURE() << "cooked into hulls of at most 8 vertices";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("raise --max-verts or --tau"), std::string::npos)
-        << error.what();
-  }
+  expect_refused_for_slivers(file, settings, "into hulls of at most 8 vertices");
   settings.max_verts = 12;
   CookedAsset asset;
   ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0));

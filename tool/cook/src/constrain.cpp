@@ -201,12 +201,7 @@ class Constrainer {
           return;
         }
       }
-      if (!is_convex_without_holes(piece) && piece.component.holes.empty()) {
-        // Left whole at τ 0: a notch no deeper than the contract's slack, which only cuts that
-        // leave slivers resolve (see resolve_notch); at 1e6 from the origin a piece 25 long and
-        // 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
-        splits_into_slivers = true;
-      } else if (is_convex_without_holes(piece)) {
+      if (is_convex_without_holes(piece)) {
         if (auto halves = halve_convex(piece.component.outer, slack_, &splits_into_slivers)) {
           for (Ring* half : {&halves->first, &halves->second}) {
             Ring hull = convex_hull(*half);
@@ -215,6 +210,11 @@ class Constrainer {
           }
           return;
         }
+      } else if (piece.component.holes.empty()) {
+        // Left whole at τ 0: a notch no deeper than the contract's slack, which only cuts that
+        // leave slivers resolve (see resolve_notch); at 1e6 from the origin a piece 25 long and
+        // 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
+        splits_into_slivers = true;
       }
     }
     Ring hull = piece.hull;

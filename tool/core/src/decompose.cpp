@@ -118,8 +118,6 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
       parts = resolve_notch(component, e.outer, e.outer.witness, settings, child_hints);
       witness = {component.outer[e.outer.witness], -1};
     }
-    // A notch of a simple polygon always has a diagonal, and a hole always a slab cut: a node kept
-    // whole here would break τ silently (issue 16), so it is an internal error instead.
     if (!parts && witness.hole < 0 && detail::is_rounding_deep(e.outer.value)) {
       // Only slivers resolve the notch, and it is no deeper than they are wide (see
       // resolve_notch): the node stays a piece, within the contract's slack of its hull.
@@ -127,6 +125,8 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
       spare_hints.push_back(std::move(child_hints.second));
       continue;
     }
+    // A notch of a simple polygon always has a diagonal, and a hole always a slab cut: a node kept
+    // whole here would break τ silently (issue 16), so it is an internal error instead.
     if (!parts) {
       throw std::logic_error(
           std::string("decompose: no cut resolves the ") + (witness.hole >= 0 ? "hole" : "notch") +
