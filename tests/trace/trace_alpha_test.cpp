@@ -149,6 +149,12 @@ TEST(TraceAlpha, EmptyAndInconsistentImages) {
   TraceResult empty = trace_alpha(image_of({"...", "..."}), TraceSettings{});
   EXPECT_TRUE(empty.regions.empty());
   EXPECT_EQ(empty.warnings.size(), 1u);
+  // Only specks: the warning names the option and its value as the user would type it.
+  TraceResult specks = trace_alpha(image_of({"#..", "..#"}), TraceSettings{});
+  EXPECT_TRUE(specks.regions.empty());
+  ASSERT_EQ(specks.warnings.size(), 1u);
+  EXPECT_NE(specks.warnings[0].find("--min-blob-area 4 px²"), std::string::npos)
+      << specks.warnings[0];
   AlphaImage wrong{3, 3, std::vector<std::uint8_t>(8, 255)};
   EXPECT_THROW(trace_alpha(wrong, TraceSettings{}), InputError);
 }

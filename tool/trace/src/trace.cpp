@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -314,8 +315,10 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
   });
 
   if (result.regions.empty()) {
-    result.warnings.push_back("every blob is smaller than --min-blob-area " +
-                              std::to_string(settings.min_blob_area) + " px²: no region traced");
+    char area[32];
+    std::snprintf(area, sizeof area, "%g", settings.min_blob_area);
+    result.warnings.push_back(std::string("every blob is smaller than --min-blob-area ") + area +
+                              " px²: no region traced");
   }
   result.trace_ms = milliseconds_since(start);
   return result;
