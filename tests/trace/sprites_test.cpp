@@ -196,5 +196,29 @@ TEST(TraceSprites, SimplificationErrorIsBounded) {
   }
 }
 
+// An outline simplified with a bound larger than the sprite drops most of its vertices: an outer
+// boundary whose chord passed on the far side of one of its holes left that hole outside it, to
+// its right, where the nesting check (the first ring met leftwards) still took the outer boundary
+// for its parent, and the cook refused the image as invalid ("hole 1 is outside the outer
+// boundary"). Found by --simplify 64 and --simplify 1e9 on these three sprites.
+TEST(TraceSprites, CoarseSimplificationKeepsEveryHoleInsideItsOuterBoundary) {
+  const std::vector<std::string> chosen{"pingus__groundpieces__ground__foliage__oak1.png",
+                                        "pingus__hotspots__space__engine.png",
+                                        "teeworlds__mapres__jungle_midground.png"};
+  for (const std::string& name : chosen) {
+    AlphaImage image = load_alpha(sprites_dir() / name, TraceSettings{});
+    const TraceResult original = trace_alpha(image, TraceSettings{});
+    for (double eps : {64.0, 1e9}) {
+      TraceSettings settings;
+      settings.simplify = eps;
+      TraceResult simplified = trace_alpha(image, settings);
+      ASSERT_EQ(simplified.regions.size(), original.regions.size()) << name << " eps " << eps;
+      // (Regions are ordered by their top-left vertex, which simplification moves.)
+      EXPECT_EQ(all_rings(simplified.regions).size(), all_rings(original.regions).size()) << name;
+      expect_valid_regions(simplified.regions, name + " eps " + std::to_string(eps));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

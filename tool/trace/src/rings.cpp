@@ -122,7 +122,12 @@ class Simplifier {
     return result;
   }
 
-  void restore(int ring) { std::fill(keep_[ring].begin(), keep_[ring].end(), 1); }
+  // Keeps every vertex of the ring; whether any was dropped.
+  bool restore(int ring) {
+    const bool changed = std::find(keep_[ring].begin(), keep_[ring].end(), 0) != keep_[ring].end();
+    std::fill(keep_[ring].begin(), keep_[ring].end(), 1);
+    return changed;
+  }
 
  private:
   static constexpr int kMaxRounds = 64;
@@ -366,9 +371,11 @@ double signed_area(const Ring& ring) {
   return twice / 2;
 }
 
-std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads) {
+std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads,
+                                 std::vector<char>* misplaced) {
   const int count = static_cast<int>(rings.size());
   std::vector<int> parents(count, -1);
+  if (misplaced) misplaced->assign(count, 0);
   if (count == 0) return parents;
   double low_y = std::numeric_limits<double>::max(), high_y = std::numeric_limits<double>::lowest();
   std::vector<int> leftmost(count, 0);
@@ -442,14 +449,14 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
   for (int r = 0; r < count; ++r) outer[r] = signed_area(rings[r]) > 0;
   // The first ring a leftward ray from a ring's leftmost vertex meets bounds the face the ring
   // lies in: it is the parent if its orientation differs (it encloses that face), else a sibling.
-  std::vector<int> hits(count, -1);
+  std::vector<int> hits(count, -1), hit_edges(count, -1);
   parallel_for_ranges(
       static_cast<std::size_t>(count), bands, kRingsPerRange,
       [&](std::size_t first, std::size_t end, unsigned) {
         for (std::size_t ring = first; ring < end; ++ring) {
           const int r = static_cast<int>(ring);
           Vec2 p = rings[r][leftmost[r]];
-          int hit = -1;
+          int hit = -1, hit_edge = -1;
           double hit_x = std::numeric_limits<double>::lowest();
           const int row = row_of(r);
           const BucketEdge* const bucket_begin = std::as_const(edges).begin(row);
@@ -461,7 +468,7 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
             if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) return;
             double x =
                 a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
-            if (x < p.x && x > hit_x) hit_x = x, hit = e.ring;
+            if (x < p.x && x > hit_x) hit_x = x, hit = e.ring, hit_edge = e.index;
           };
           if (queries[row] <= kScanQueries) {
             for (auto e = bucket_begin; e != bucket_end; ++e) consider(*e);
@@ -475,7 +482,7 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
               consider(*e);
             }
           }
-          hits[r] = hit;
+          hits[r] = hit, hit_edges[r] = hit_edge;
         }
       });
   // A sibling's parent is known first: the ring hit lies to the left, so it comes first in the
@@ -490,6 +497,33 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
     const int hit = hits[r];
     if (hit < 0) continue;
     parents[r] = outer[r] != outer[hit] ? hit : parents[hit];
+  }
+  if (misplaced) {
+    // The rule above holds for rings nested as traced, where the ring hit first encloses the ring
+    // exactly when their orientations differ. Simplified rings may break it (a hole left to the
+    // right of an outer boundary that shrank away from it), so the side of the hit edge that
+    // faces the ring tells whether the ring hit encloses it; at a vertex, an even-odd count.
+    for (int r = 0; r < count; ++r) {
+      const int hit = hits[r];
+      if (hit < 0) continue;
+      const Ring& ring = rings[hit];
+      const Vec2 p = rings[r][leftmost[r]];
+      const Vec2 a = ring[hit_edges[r]], b = ring[(hit_edges[r] + 1) % ring.size()];
+      bool encloses;
+      if (std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y)) {
+        // A counter-clockwise ring encloses what lies left of its edges: east of a downward edge.
+        encloses = (b.y < a.y) == static_cast<bool>(outer[hit]);
+      } else {
+        encloses = false;
+        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+          const Vec2 c = ring[i], d = ring[(i + 1) % n];
+          if ((c.y > p.y) != (d.y > p.y) && p.x < c.x + (d.x - c.x) * (p.y - c.y) / (d.y - c.y)) {
+            encloses = !encloses;
+          }
+        }
+      }
+      (*misplaced)[r] = encloses != (outer[r] != outer[hit]);
+    }
   }
   return parents;
 }
@@ -511,13 +545,14 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
       }
     }
     if (!restored) {
-      std::vector<int> now = nesting_parents(result, threads);
+      std::vector<char> misplaced;
+      std::vector<int> now = nesting_parents(result, threads, &misplaced);
       for (std::size_t r = 0; r < rings.size(); ++r) {
-        if (now[r] == parents[r]) continue;
-        simplifier.restore(static_cast<int>(r));
-        if (now[r] >= 0) simplifier.restore(now[r]);
-        if (parents[r] >= 0) simplifier.restore(parents[r]);
-        restored = true;
+        if (now[r] == parents[r] && !misplaced[r]) continue;
+        // Restoring rings already whole changes nothing: only a change loops again.
+        restored |= simplifier.restore(static_cast<int>(r));
+        if (now[r] >= 0) restored |= simplifier.restore(now[r]);
+        if (parents[r] >= 0) restored |= simplifier.restore(parents[r]);
       }
     }
     if (!restored) break;

@@ -14,7 +14,11 @@ double signed_area(const Ring& ring);
 // For rings that neither cross nor touch each other: the index of the ring immediately
 // enclosing each ring, or -1. Uses each ring's orientation sign (outer > 0, hole < 0).
 // threads: how many may work at once; the result is the same for any count.
-std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads = 1);
+// misplaced, when given, gets 1 for each ring whose parent that rule cannot be trusted for: the
+// ring first met leftwards encloses it but has its orientation, or does not and has the other
+// (rings that are not nested as outer boundaries and holes, e.g. after simplification).
+std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads = 1,
+                                 std::vector<char>* misplaced = nullptr);
 
 // Simplifies every ring with error bound eps [px] (every vertex of the original ring lies within
 // eps of the simplified ring), keeping the rings simple, disjoint and nested as before, each with
