@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <cmath>
 #include <cstdio>
 
 #include <filesystem>
@@ -341,6 +342,39 @@ TEST(Cook, ShapeBudgetGivesTheFinestLevelWithinIt) {
   finer.max_pieces = 0;
   finer.tau = Tolerance{budget.assets[0].tau * 0.99, false};
   EXPECT_GT(cook({sprite}, finer).assets[0].stats.pieces, 4u);
+}
+
+// Over many regions the budget is the whole asset's: the smallest of every tree's levels whose
+// pieces fit (found by a binary search since a scan over the candidates took 52 s on the
+// synthetic set's blobs at tau 0), and each region at least one piece.
+TEST(Cook, ShapeBudgetOverManyRegionsIsTheFinestLevelWithinIt) {
+  Settings settings;
+  settings.tau = Tolerance{0.0, false};
+  settings.weld = 0.0;
+  settings.max_verts = 0;
+  auto sprite = kSprites / "teeworlds__emoticons.png";
+  const CookedAsset finest = cook({sprite}, settings).assets.at(0);
+  const std::size_t regions = finest.regions.size();
+  ASSERT_GT(regions, 10u);
+  ASSERT_GT(finest.stats.pieces, 2 * regions);
+  for (std::size_t budget : {std::size_t{1}, regions, regions + 3, 2 * regions}) {
+    settings.max_pieces = budget;
+    const CookedAsset within = cook({sprite}, settings).assets.at(0);
+    EXPECT_LE(within.stats.pieces, std::max(budget, regions)) << budget;
+    if (budget <= regions) {
+      EXPECT_EQ(within.stats.pieces, regions) << budget;
+      continue;
+    }
+    // Levels of detail are read off the same trees (built at tau 0): the level just finer than
+    // the budget's breaks it. (A cook built at that tau cuts trees of its own.)
+    Settings levels = settings;
+    levels.max_pieces = 0;
+    levels.lods = {Tolerance{std::nextafter(within.tau, 0.0), false}, Tolerance{within.tau, false}};
+    const CookedAsset read = cook({sprite}, levels).assets.at(0);
+    ASSERT_EQ(read.levels.size(), 3u);
+    EXPECT_EQ(read.levels[2].hulls.size(), within.stats.pieces) << budget;
+    EXPECT_GT(read.levels[1].hulls.size(), budget) << budget;
+  }
 }
 
 TEST(Cook, PixelsToWorldMapsPivotScaleAndFlip) {

@@ -209,6 +209,7 @@ inline void check_tree(const Region& region, const DecompositionTree& tree, Meas
       return tree.piece_count_at(t) == within.size();
     });
     ASSERT_NE(level, taus.end());
+    EXPECT_EQ(tree.tau_within(budget), *level);
     if (level != taus.begin()) {
       EXPECT_GT(tree.piece_count_at(*(level - 1)), budget);
     }

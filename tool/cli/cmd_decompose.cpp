@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -32,15 +31,6 @@ struct DecomposeOptions {
   std::size_t max_pieces = 0;
   std::string json;
 };
-
-// The τ of the level that DecompositionTree::pieces_within(max_pieces) gives: the finest level
-// with at most max_pieces pieces, or infinity (the whole region) when none has so few.
-double tau_within(const DecompositionTree& tree, std::size_t max_pieces) {
-  for (double level : tree.level_taus()) {
-    if (tree.piece_count_at(level) <= std::max<std::size_t>(max_pieces, 1)) return level;
-  }
-  return std::numeric_limits<double>::infinity();
-}
 
 int run_decompose(const DecomposeOptions& options) {
   const Tolerance tolerance = Tolerance::parse(options.tau);
@@ -72,7 +62,7 @@ int run_decompose(const DecomposeOptions& options) {
     } catch (const std::logic_error& e) {
       throw ContractError(options.input + ": internal error: " + e.what());
     }
-    level_tau.push_back(options.max_pieces ? tau_within(tree, options.max_pieces) : tau);
+    level_tau.push_back(options.max_pieces ? tree.tau_within(options.max_pieces) : tau);
     std::vector<Piece> part = tree.pieces_at(level_tau.back());
     first_piece.push_back(pieces.size());
     for (Piece& piece : part) pieces.push_back(std::move(piece));

@@ -255,10 +255,12 @@ class AssetDecomposer {
       }
     }
     std::sort(candidates.begin(), candidates.end());
-    for (double candidate : candidates) {
-      if (piece_count_at(candidate) <= max_pieces) return candidate;
-    }
-    return candidates.back();
+    // The count does not grow with the tolerance: a binary search (a scan took minutes on an
+    // image of thousands of blobs at tau 0, where every one of its nodes is a candidate).
+    const auto fitting = std::partition_point(
+        candidates.begin(), candidates.end(),
+        [&](double candidate) { return piece_count_at(candidate) > max_pieces; });
+    return fitting == candidates.end() ? candidates.back() : *fitting;
   }
 
  private:

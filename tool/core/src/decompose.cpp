@@ -211,21 +211,16 @@ std::vector<double> DecompositionTree::level_taus() const {
 }
 
 std::vector<Piece> DecompositionTree::pieces_within(std::size_t max_pieces) const {
+  return pieces_at(tau_within(max_pieces));
+}
+
+double DecompositionTree::tau_within(std::size_t max_pieces) const {
   const std::size_t budget = std::max<std::size_t>(max_pieces, 1);
   const std::vector<double> taus = level_taus();
   // The piece count does not grow with τ: binary search for the finest level within budget.
-  std::size_t low = 0, high = taus.size() - 1;
-  if (piece_count_at(taus[high]) > budget)
-    return pieces_at(std::numeric_limits<double>::infinity());
-  while (low < high) {
-    const std::size_t middle = (low + high) / 2;
-    if (piece_count_at(taus[middle]) <= budget) {
-      high = middle;
-    } else {
-      low = middle + 1;
-    }
-  }
-  return pieces_at(taus[low]);
+  const auto level = std::partition_point(taus.begin(), taus.end(),
+                                          [&](double tau) { return piece_count_at(tau) > budget; });
+  return level == taus.end() ? std::numeric_limits<double>::infinity() : *level;
 }
 
 double convexity(const std::vector<Piece>& pieces) {

@@ -66,6 +66,10 @@ class DecompositionTree {
   // The finest level with at most max_pieces pieces (max_pieces 0 is treated as 1).
   std::vector<Piece> pieces_within(std::size_t max_pieces) const;
 
+  // The τ of that level: the smallest of level_taus() with at most max_pieces pieces (0 is
+  // treated as 1), or infinity when none has so few. O(nodes × log(levels)).
+  double tau_within(std::size_t max_pieces) const;
+
   // Number of pieces pieces_at(tau) would return, without building them.
   std::size_t piece_count_at(double tau) const;
 
