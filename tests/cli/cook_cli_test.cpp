@@ -176,7 +176,7 @@ TEST_F(CookCli, ReviewOptionsOutOfRangeAreUsageErrors) {
        {"--max-verts 2", "--max-verts 1", "--density nan", "--friction inf", "--density -1",
         "--tau 1e30", "--ppu 1e-30", "--ppu 1e300", "--max-pieces -1", "--max-pixels -1",
         "--weld -1", "--simplify nan", "--sc nan", "--sd inf", "--min-blob-area nan",
-        "--threads -1", "--category 70000"}) {
+        "--threads -1", "--category 70000", "--pivot 1e308,1e308", "--pivot 0.5,-2e6"}) {
     auto result = run_hullcook("cook " + input.string() + " -o " + output.string() + " " + option);
     EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage))
         << option << ": " << result.output;

@@ -334,6 +334,11 @@ TEST_F(SheetCli, BadSheetsAreRefusedNamingTheFile) {
       sheet({{"a", merged({{"spriteSourceSize", {{"x", 9}, {"y", 0}, {"w", 2}, {"h", 2}}},
                            {"sourceSize", {{"w", 10}, {"h", 10}}}})}}),
       "the trimmed sprite does not lie inside sourceSize");
+  // A pivot this far put no finite coordinate in the outline, refused as a broken outline.
+  expect_refused("far_pivot.json", sheet(with("pivot", {{"x", 1e308}, {"y", 0.5}})),
+                 "frame 'a': the pivot lies more than 1e6 sprite sizes from the sprite");
+  expect_refused("nan_pivot.json", sheet(with("pivot", {{"x", "a"}, {"y", 0.5}})),
+                 "frame 'a': pivot: 'x' must be a finite number");
 }
 
 }  // namespace

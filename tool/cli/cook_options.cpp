@@ -2,6 +2,7 @@
 
 #include "hullcook/core/error.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -205,6 +206,9 @@ void finish_cook_options(const CLI::App& command, Settings& settings, const Cook
   if (pivot.size() != 2) throw UsageError("--pivot: expected u,v such as 0.5,0.5");
   settings.pivot_u = parse_number(pivot[0], "--pivot");
   settings.pivot_v = parse_number(pivot[1], "--pivot");
+  if (std::abs(settings.pivot_u) > kLargestPivot || std::abs(settings.pivot_v) > kLargestPivot) {
+    throw UsageError("--pivot: '" + options.pivot + "' is not within [-1e6, 1e6] image sizes");
+  }
   if (settings.max_verts == 1 || settings.max_verts == 2) {
     throw UsageError("--max-verts: " + std::to_string(settings.max_verts) +
                      " is too few for a polygon: use 0 (unlimited) or at least 3");

@@ -1,5 +1,6 @@
 #include "sheet.h"
 
+#include "hullcook/cook/cook.h"
 #include "hullcook/core/error.h"
 
 #include <nlohmann/json.hpp>
@@ -59,6 +60,13 @@ class SheetReader {
     return value.get<double>();
   }
 
+  // pivot: normalised.
+  void check_pivot(Vec2 pivot, const std::string& where) const {
+    if (std::abs(pivot.x) > kLargestPivot || std::abs(pivot.y) > kLargestPivot) {
+      fail(where, "the pivot lies more than 1e6 sprite sizes from the sprite");
+    }
+  }
+
   bool flag(const Json& object, const char* key, const std::string& where) const {
     if (!object.contains(key)) return false;
     if (!object.at(key).is_boolean())
@@ -108,6 +116,7 @@ class SheetReader {
     if (entry.contains("pivot")) {
       frame.pivot = Vec2{real(entry["pivot"], "x", where + ": pivot"),
                          real(entry["pivot"], "y", where + ": pivot")};
+      check_pivot(*frame.pivot, where);
     }
     return frame;
   }
@@ -148,6 +157,7 @@ class SheetReader {
                             (pivot_from[f].empty() ? "" : " from slice '" + pivot_from[f] + "'"));
           }
           frame.pivot = Vec2{px / frame.width, py / frame.height};
+          check_pivot(*frame.pivot, where);
           pivot_from[f] = name;
         }
       }

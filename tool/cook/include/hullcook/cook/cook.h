@@ -64,7 +64,8 @@ struct Settings {
 
   // Pixels to world.
   double pixels_per_unit = 1.0;
-  double pivot_u = 0.5, pivot_v = 0.5;  // normalised image coordinates of the origin
+  double pivot_u = 0.5, pivot_v = 0.5;  // normalised image coordinates of the origin, at most
+                                        // kLargestPivot from 0
   bool y_down = false;                  // keep image orientation (y down) in the output
 
   // Engine constraints.
@@ -85,6 +86,10 @@ struct Settings {
   // asset is cooked (cook's on_cooked), after which they may go: CookedStats keeps their count.
   bool keep_hulls = true;
 };
+
+// The farthest a pivot (Settings, or a sheet frame's) may lie [image sizes]: beyond it the
+// origin, times an image's size, leaves the outline no finite coordinate.
+constexpr double kLargestPivot = 1e6;
 
 // Box2D 2.4's b2_linearSlop [m]: with 1 unit = 1 m, b2PolygonShape::Set welds vertices closer
 // than half of it, so hulls keep their vertices at least this far apart.
