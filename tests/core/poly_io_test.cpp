@@ -71,6 +71,21 @@ TEST(PolyIo, FollowsTheIndexOrderAndRoundTrips) {
   EXPECT_EQ(again[0].outer, regions[0].outer);
 }
 
+// As Windows editors save them: a byte order mark, CRLF line ends, tabs and commas.
+TEST(PolyIo, ReadsAFileSavedWithAByteOrderMarkAndCrlf) {
+  const std::string square = "1\r\n4\tout\r\n0 0\r\n2,0\r\n2 2\r\n0 2\r\n1 2 3 4\r\n";
+  const auto plain = parse_poly(square, "plain.poly");
+  const auto marked = parse_poly("\xEF\xBB\xBF" + square, "marked.poly");
+  ASSERT_EQ(marked.size(), 1u);
+  EXPECT_EQ(marked[0].outer, plain[0].outer);
+  EXPECT_EQ(marked[0].outer, (Ring{{0, 0}, {2, 0}, {2, 2}, {0, 2}}));
+  // Only at the very start: elsewhere those bytes are a bad token, named with its line.
+  EXPECT_THAT(error_of("mark_inside.poly",
+                       "1\n\xEF\xBB\xBF"
+                       "4 out\n0 0\n2 0\n2 2\n0 2\n1 2 3 4\n"),
+              HasSubstr("mark_inside.poly:2"));
+}
+
 TEST(PolyIo, CleansRepeatedAndCollinearVertices) {
   const auto regions = clean_and_validate(
       {Region{{{0, 0}, {1, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 1}, {0, 0}}, {}}}, "m");

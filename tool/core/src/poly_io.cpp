@@ -99,6 +99,11 @@ class Tokenizer {
 }  // namespace
 
 std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
+  // Editors on Windows start a UTF-8 file with a byte order mark.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+    text.remove_prefix(kByteOrderMark.size());
+  }
   Tokenizer tokens(text, source);
   if (tokens.at_end()) {
     throw InputError(std::string(source) + ": empty file: no polygon");
