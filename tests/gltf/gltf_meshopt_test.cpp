@@ -106,6 +106,17 @@ TEST(GltfMeshopt, SampleSpritesWithinHalfAStep) {
   expect_meshopt_file_holds(test::sample_sprites({Tolerance{8.0, false}}), true);
 }
 
+// Where the extent sets the step (extent / 65 000), extent / step can come back a few ulps over
+// 65 000: a generated polygon 2e6 wide was refused ("its hulls do not fit a 16-bit grid", exit 3).
+TEST(GltfMeshopt, HullsWhoseExtentSetsTheStepAreWritten) {
+  const double extent = 4328237.9119826285;  // extent / (extent / 65000) > 65000 in doubles
+  ASSERT_GT(extent / (extent / 65000.0), 65000.0);
+  CookedAsset asset = test::base_asset("wide");
+  asset.pixels_per_unit = 1.0;
+  asset.levels.push_back({asset.tau, {{{0.0, 0.0}, {extent, 0.0}, {extent, 3.0}, {0.0, 7.0}}}});
+  expect_meshopt_file_holds({asset}, true);
+}
+
 TEST(GltfMeshopt, SameBytesEveryRun) {
   const GltfOptions options{.binary = true, .meshopt = true};
   EXPECT_EQ(write_gltf(test::all_sample_assets(), options),

@@ -29,7 +29,12 @@ Quantization Quantization::of(const CookedAsset& asset) {
   grid.step = std::max({std::sqrt(2.0) * 0.01 * tau,
                         std::sqrt(2.0) / (64.0 * asset.pixels_per_unit), extent / 65000.0});
   grid.origin = {0.5 * (min_x + max_x), 0.5 * (min_y + max_y)};
-  if (!(grid.step > 0.0) || !std::isfinite(grid.step) || extent / grid.step > 65000.0) {
+  // About the origin, the int16 range holds 65 534 quanta less the rounding of both ends. (The
+  // step's own 65 000 may come back a few ulps over 65 000 when the extent sets it: the test
+  // against 65 000 refused hulls 1e6 wide.)
+  constexpr double kQuantaAboutTheOrigin = 65532.0;
+  if (!(grid.step > 0.0) || !std::isfinite(grid.step) ||
+      extent / grid.step > kQuantaAboutTheOrigin) {
     throw OutputError("asset " + asset.name + ": its hulls do not fit a 16-bit grid");
   }
   return grid;
