@@ -86,6 +86,11 @@ TEST_F(LinkCli, CookThenLinkWritesTheBytesOfOneCook) {
   EXPECT_NE(read_bytes(directory / "linked.json").find("\"level/signs/danger.png\""),
             std::string::npos);
   EXPECT_GT(fs::file_size(directory / "linked.glb"), 0u);
+  // One of each, in the singular.
+  auto single = run_hullcook("link " + (directory / "f0.hcf").string() + " -o " +
+                             (directory / "single.hcb").string());
+  EXPECT_NE(single.output.find("linked 1 asset from 1 fragment into"), std::string::npos)
+      << single.output;
 }
 
 // What remote execution needs: the same input cooked in two places, one named by an absolute

@@ -38,7 +38,7 @@ TEST(Inspect, PrintsASummaryOfABundle) {
   EXPECT_NE(result.output.find("6 assets"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("bytes per vertex"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("asset \"terrain/hill.png\""), std::string::npos);
-  EXPECT_NE(result.output.find("level 2: tau 24, 1 hulls, 5 vertices"), std::string::npos)
+  EXPECT_NE(result.output.find("level 2: tau 24, 1 hull, 5 vertices"), std::string::npos)
       << result.output;
   EXPECT_NE(result.output.find("physics: density 2.5, friction 0.6"), std::string::npos)
       << result.output;

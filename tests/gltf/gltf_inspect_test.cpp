@@ -131,10 +131,10 @@ TEST_F(GltfInspect, TextListsAssetsLevelsAndHulls) {
   auto path = write("box.glb", write_gltf({test::box_asset()}, {.binary = true}));
   InspectRun run = inspect(path, false);
   ASSERT_EQ(run.code, 0) << run.err;
-  EXPECT_NE(run.out.find("1 assets, 2 hulls, 7 hull vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("1 asset, 2 hulls, 7 hull vertices"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("bytes per vertex"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("asset \"box\""), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("level 1: tau 0.5, 1 hulls, 3 vertices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("level 1: tau 0.5, 1 hull, 3 vertices"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("(0.33333334, -0.5)"), std::string::npos) << run.out;
 }
 

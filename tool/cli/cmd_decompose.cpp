@@ -1,6 +1,7 @@
 // hullcook decompose: the ACD of one .poly file, its one-line summary and the debug JSON.
 #include "commands.h"
 #include "cook_options.h"
+#include "counted.h"
 
 #include "hullcook/cook/contract.h"
 #include "hullcook/cook/cook.h"
@@ -108,9 +109,10 @@ int run_decompose(const DecomposeOptions& options) {
   enforce_contract(options.input, violations);
 
   if (!options.json.empty()) write_file_atomically(options.json, debug_json({asset}));
-  std::printf("%s: %zu pieces, max concavity %.6g, convexity %.6f, %.3f ms (tau %.6g, %s)\n",
-              options.input.c_str(), pieces.size(), asset.stats.max_concavity,
-              asset.stats.convexity, milliseconds, tau, asset.measure.c_str());
+  std::printf("%s: %s, max concavity %.6g, convexity %.6f, %.3f ms (tau %.6g, %s)\n",
+              options.input.c_str(), counted(pieces.size(), "piece", "pieces").c_str(),
+              asset.stats.max_concavity, asset.stats.convexity, milliseconds, tau,
+              asset.measure.c_str());
   return 0;
 }
 

@@ -2,6 +2,7 @@
 // Bundles are read with the game runtime itself (hullcook::runtime), so inspect shows exactly
 // what a game sees; glTF files go to inspect_gltf() (inspect_gltf.cpp).
 #include "commands.h"
+#include "counted.h"
 #include "inspect.h"
 
 #include "hullcook/cook/debug_json.h"
@@ -52,8 +53,10 @@ void print_text(const std::filesystem::path& path, const rt::Bundle& bundle) {
   const std::size_t vertices = bundle.vertex_count();
   std::cout << path.string() << ": hullcook bundle " << bundle.version_major() << "."
             << bundle.version_minor() << ", " << bundle.size() << " bytes (64-byte header), "
-            << bundle.asset_count() << " assets, " << bundle.level_count() << " levels, "
-            << bundle.hull_count() << " hulls, " << vertices << " hull vertices";
+            << counted(bundle.asset_count(), "asset", "assets") << ", "
+            << counted(bundle.level_count(), "level", "levels") << ", "
+            << counted(bundle.hull_count(), "hull", "hulls") << ", "
+            << counted(vertices, "hull vertex", "hull vertices");
   if (vertices > 0) {
     std::cout << ", " << shortest_text(std::round(100.0 * bundle.size() / vertices) / 100.0)
               << " bytes per vertex overall (4 per vertex + 12 per hull + 8 per level + 32 per "
@@ -80,7 +83,8 @@ void print_text(const std::filesystem::path& path, const rt::Bundle& bundle) {
     for (std::size_t l = 0; l < asset.level_count(); ++l) {
       const rt::Level level = asset.level(l);
       std::cout << "  level " << l << ": tau " << shortest_text(level.tau()) << ", "
-                << level.hull_count() << " hulls, " << level.vertex_count() << " vertices\n";
+                << counted(level.hull_count(), "hull", "hulls") << ", "
+                << counted(level.vertex_count(), "vertex", "vertices") << "\n";
       for (std::size_t h = 0; h < level.hull_count(); ++h) {
         const rt::Hull hull = level.hull(h);
         std::cout << "    hull " << h << " (" << hull.vertex_count() << "):";

@@ -1,5 +1,6 @@
 // hullcook link FRAGMENT.hcf... -o OUT.hcb|.gltf|.glb|.json
 #include "commands.h"
+#include "counted.h"
 #include "outputs.h"
 
 #include "hullcook/cook/cook.h"
@@ -95,8 +96,10 @@ void add_link(CLI::App& root, CommandAction& action) {
       if (!command->report.empty()) files.push_back({command->report, cook_report(result, false)});
       write_files_atomically(files);
       if (!command->quiet) {
-        std::printf("linked %zu assets from %zu fragments into %s\n", result.assets.size(),
-                    fragments.size(), outputs.front().string().c_str());
+        std::printf("linked %s from %s into %s\n",
+                    counted(result.assets.size(), "asset", "assets").c_str(),
+                    counted(fragments.size(), "fragment", "fragments").c_str(),
+                    outputs.front().string().c_str());
       }
       return 0;
     };

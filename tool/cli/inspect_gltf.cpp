@@ -1,6 +1,7 @@
 // `hullcook inspect FILE.gltf|FILE.glb`: reads the hulls back from the asset nodes' extras
 // (docs/gltf-extras.md), the canonical data; the meshes are only a mirror and are not read.
 // Version 1 of the extras holds the hulls as JSON numbers, version 2 as accessors into the buffer.
+#include "counted.h"
 #include "gltf_data.h"
 #include "inspect.h"
 
@@ -360,8 +361,9 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
             << (contents.binary ? "binary (.glb)" : "text (.gltf)")
             << (contents.draco ? " with Draco meshes" : "")
             << (contents.meshopt ? " with meshopt compression" : "") << ", " << contents.bytes
-            << " bytes, " << contents.assets.size() << " assets, " << hulls << " hulls, "
-            << vertices << " hull vertices over all levels";
+            << " bytes, " << counted(contents.assets.size(), "asset", "assets") << ", "
+            << counted(hulls, "hull", "hulls") << ", "
+            << counted(vertices, "hull vertex", "hull vertices") << " over all levels";
   if (vertices > 0) {
     std::cout << ", " << shortest(std::round(10.0 * contents.bytes / vertices) / 10.0)
               << " bytes per vertex";
@@ -385,8 +387,9 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
       const CookedLevel& level = asset.levels[l];
       std::size_t level_vertices = 0;
       for (const Ring& hull : level.hulls) level_vertices += hull.size();
-      std::cout << "  level " << l << ": tau " << shortest(level.tau) << ", " << level.hulls.size()
-                << " hulls, " << level_vertices << " vertices\n";
+      std::cout << "  level " << l << ": tau " << shortest(level.tau) << ", "
+                << counted(level.hulls.size(), "hull", "hulls") << ", "
+                << counted(level_vertices, "vertex", "vertices") << "\n";
       for (std::size_t h = 0; h < level.hulls.size(); ++h) {
         std::cout << "    hull " << h << " (" << level.hulls[h].size() << "):";
         for (const Vec2& v : level.hulls[h]) std::cout << " " << point_text(v);
