@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace hullcook {
@@ -208,6 +209,42 @@ TEST_F(CookCli, ReviewASymbolicLinkLoopInADirectoryIsSkipped) {
       run_hullcook("cook " + images.string() + " -o " + (directory / "out.hcb").string() + " -q");
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(fs::exists(directory / "out.hcb"));
+}
+
+// An image whose file moved away under its link was left out without a word: the game would have
+// missed the asset.
+TEST_F(CookCli, ABrokenLinkToAnImageInADirectoryIsBadInput) {
+  fs::path images = directory / "images";
+  fs::create_directories(images);
+  std::ofstream(images / "square.png", std::ios::binary) << opaque_square_png();
+  fs::create_symlink(directory / "moved_away.png", images / "hero.png");
+  auto result =
+      run_hullcook("cook " + images.string() + " -o " + (directory / "out.hcb").string() + " -q");
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find((images / "hero.png").string() + ": a broken symbolic link"),
+            std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+}
+
+// The table's columns line up under names of any UTF-8 characters.
+TEST_F(CookCli, TheTableAlignsNamesByCharactersNotBytes) {
+  write("\xC3\xA9t\xC3\xA9.png", opaque_square_png());  // "été.png": 7 characters, 9 bytes
+  write("plain.png", opaque_square_png());
+  auto result =
+      run_hullcook("cook " + directory.string() + " -o " + (directory / "out.hcb").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::istringstream lines(result.output);
+  std::string header, accented, plain;
+  std::getline(lines, header), std::getline(lines, plain), std::getline(lines, accented);
+  ASSERT_EQ(plain.rfind("plain.png", 0), 0u) << result.output;
+  ASSERT_EQ(accented.rfind("\xC3\xA9t\xC3\xA9.png", 0), 0u) << result.output;
+  // The name column is 56 characters and a space, then vertices, pieces and hulls right-aligned:
+  // the accented row's fields start 2 bytes later (2 characters of 2 bytes each).
+  ASSERT_GE(accented.size(), 59u + 27u) << result.output;
+  EXPECT_EQ(header.substr(57, 9), " vertices") << result.output;
+  EXPECT_EQ(accented.substr(59, 27), plain.substr(57, 27)) << result.output;
+  EXPECT_NE(plain.substr(57, 27).find_first_of("0123456789"), std::string::npos);
 }
 
 TEST_F(CookCli, ReviewASidecarThatIsADirectoryIsBadInput) {

@@ -35,11 +35,18 @@ struct CookCommand {
   CookOptions options;
 };
 
+// text padded to width columns: a UTF-8 name takes a column per character, not per byte.
+std::string padded(const std::string& text, std::size_t width) {
+  std::size_t characters = 0;
+  for (unsigned char c : text) characters += (c & 0xC0) != 0x80;  // not a continuation byte
+  return text + std::string(width > characters ? width - characters : 0, ' ');
+}
+
 void print_summary(const CookResult& result) {
   std::printf("%-56s %9s %7s %9s %13s %9s\n", "asset", "vertices", "pieces", "hulls",
               "max concavity", "ms");
   for (const CookedAsset& asset : result.assets) {
-    std::printf("%-56s %9zu %7zu %9zu %13.4g %9.2f\n", asset.name.c_str(),
+    std::printf("%s %9zu %7zu %9zu %13.4g %9.2f\n", padded(asset.name, 56).c_str(),
                 asset.stats.traced_vertices, asset.stats.pieces, asset.stats.hulls,
                 asset.stats.max_concavity, asset.stats.total_ms);
   }

@@ -144,6 +144,11 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
           add_input_file(found, it->path(), it->path().lexically_relative(input).generic_string(),
                          settings, asset_settings);
+        } else if (is_image_file(it->path()) && it->is_symlink(entry_error) &&
+                   !it->exists(entry_error)) {
+          // An asset moved or renamed under its link: left out, the game would miss it.
+          throw InputError(it->path().string() + ": a broken symbolic link (to " +
+                           std::filesystem::read_symlink(it->path(), entry_error).string() + ")");
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
