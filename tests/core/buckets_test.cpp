@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -115,6 +116,37 @@ TEST(Buckets, FiledByBandsOnThreadsAsByOneThread) {
       });
     });
     expect_holds(index, expected(filed, rows));
+  }
+}
+
+// Filings split into consecutive parts of the items, each part on a thread of its own (as the
+// tracer's nesting and untangling grids file their edges), give the one-thread index: every
+// bucket in item order, whatever the count of parts, also with fewer items than parts.
+TEST(Buckets, FiledInPartsOnThreadsAsByOneThread) {
+  for (std::size_t buckets : {std::size_t(1), std::size_t(7), std::size_t(300)}) {
+    for (std::size_t count : {std::size_t(0), std::size_t(2), std::size_t(20000)}) {
+      const auto filed = filings(buckets, count, 9);
+      for (unsigned parts : {1u, 2u, 3u, 8u}) {
+        SCOPED_TRACE(testing::Message()
+                     << buckets << " buckets, " << count << " items, " << parts << " parts");
+        Buckets<int, int> index;
+        std::vector<int> filed_by_part(count, -1);
+        // Twice: a rebuild of an index built before forgets it.
+        for (int round = 0; round < 2; ++round) {
+          index.build_in_parts(buckets, count, parts,
+                               [&](unsigned part, std::size_t begin, std::size_t end, auto&& add) {
+                                 for (std::size_t i = begin; i < end; ++i) {
+                                   filed_by_part[i] = static_cast<int>(part);
+                                   add(filed[i].second, filed[i].first);
+                                 }
+                               });
+        }
+        expect_holds(index, expected(filed, buckets));
+        // Consecutive ranges, every item in one.
+        EXPECT_TRUE(std::is_sorted(filed_by_part.begin(), filed_by_part.end()));
+        EXPECT_EQ(std::count(filed_by_part.begin(), filed_by_part.end(), -1), 0);
+      }
+    }
   }
 }
 

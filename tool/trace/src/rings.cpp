@@ -267,8 +267,8 @@ class Simplifier {
       return std::clamp(static_cast<int>((y - low.y) / cell), 0, rows - 1);
     };
     const double margin = 1e-6;
-    // Visits the cells of rows [band_low, band_high) that the segment's path crosses.
-    auto for_each_cell = [&](const Segment& segment, int band_low, int band_high, auto&& visit) {
+    // Visits the cells that the segment's path crosses.
+    auto for_each_cell = [&](const Segment& segment, auto&& visit) {
       Vec2 a = rings_[segment.ring][segment.from];
       Vec2 b = rings_[segment.ring][segment.to];
       if (a.x > b.x) std::swap(a, b);
@@ -282,27 +282,22 @@ class Simplifier {
           y1 = a.y + (b.y - a.y) * (std::clamp(x1, a.x, b.x) - a.x) / (b.x - a.x);
         }
         if (y0 > y1) std::swap(y0, y1);
-        for (int row = std::max(band_low, clamp_row(y0 - margin)),
-                 last = std::min(band_high - 1, clamp_row(y1 + margin));
-             row <= last; ++row) {
+        for (int row = clamp_row(y0 - margin), last = clamp_row(y1 + margin); row <= last; ++row) {
           visit(static_cast<std::size_t>(row) * columns + column);
         }
       }
     };
-    // The grid is built in bands of rows, one per worker: each walks every segment in order and
-    // writes only its own rows, so a cell's order is the one-thread order.
+    // The grid is built by a part of the segments on each worker (in order), which keeps a
+    // cell's order the one-thread order.
     const int bands = band_count(rows, threads_, segments.size() >= kEdgesWorthAThread);
-    auto for_each_band = [&](auto&& enter) {
-      parallel_for_bands(rows, bands, [&](std::size_t, int band_low, int band_high) {
-        for (std::size_t s = 0; s < segments.size(); ++s) {
-          for_each_cell(segments[s], band_low, band_high, [&](std::size_t c) { enter(c, s); });
-        }
-      });
-    };
     Buckets<int, int>& grid = grid_;
-    grid.build(static_cast<std::size_t>(columns) * rows, [&](auto&& add) {
-      for_each_band([&](std::size_t c, std::size_t s) { add(c, static_cast<int>(s)); });
-    });
+    grid.build_in_parts(
+        static_cast<std::size_t>(columns) * rows, segments.size(), static_cast<unsigned>(bands),
+        [&](unsigned, std::size_t begin, std::size_t end, auto&& add) {
+          for (std::size_t s = begin; s < end; ++s) {
+            for_each_cell(segments[s], [&](std::size_t c) { add(c, static_cast<int>(s)); });
+          }
+        });
     // The pairs of each range of cells, joined in the cells' order.
     const std::size_t cells = grid.bucket_count();
     return parallel_join<std::pair<int, int>>(
@@ -403,30 +398,41 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
     return std::pair{static_cast<int>(std::min(a.y, b.y) - low_y),
                      static_cast<int>(std::max(a.y, b.y) - low_y)};
   };
-  // The buckets are built in bands of rows, one per worker: each walks every edge in order and
-  // writes only its own rows, so a bucket's order is the one-thread order.
+  // The buckets are built by a part of the edges on each worker (in ring order), which keeps
+  // a bucket's order the one-thread order.
   const int bands = band_count(rows, threads, edge_count >= kEdgesWorthAThread);
-  auto for_each_band = [&](auto&& work) {
-    parallel_for_bands(rows, bands, [&](std::size_t, int band_low, int band_high) {
-      for (int r = 0; r < count; ++r) {
-        for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
-          Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
-          auto [first, last] = row_range(a, b);
-          first = std::max(first, band_low), last = std::min(last, band_high - 1);
-          for (int row = first; row <= last; ++row) work(row, a, b, r, i);
-        }
-      }
-    });
-  };
+  std::vector<std::size_t> ring_first(count + 1, 0);  // the first edge of each ring
+  for (int r = 0; r < count; ++r) ring_first[r + 1] = ring_first[r] + rings[r].size();
+  // The largest x extent of an edge in each bucket, per part.
+  std::vector<double> part_widest(static_cast<std::size_t>(bands) * rows, 0.0);
   Buckets<BucketEdge, int> edges;
-  std::vector<double> widest(rows, 0.0);  // the largest x extent of an edge in each bucket
-  edges.build(static_cast<std::size_t>(rows), [&](auto&& add) {
-    for_each_band([&](int row, Vec2 a, Vec2 b, int r, std::size_t i) {
-      add(static_cast<std::size_t>(row), BucketEdge{std::min(a.x, b.x), r, static_cast<int>(i)});
-      // Taken on both passes alike: a maximum.
-      widest[row] = std::max(widest[row], std::abs(b.x - a.x));
-    });
-  });
+  edges.build_in_parts(
+      static_cast<std::size_t>(rows), edge_count, static_cast<unsigned>(bands),
+      [&](unsigned part, std::size_t begin, std::size_t end, auto&& add) {
+        double* const widest = part_widest.data() + std::size_t{part} * rows;
+        int r = static_cast<int>(std::upper_bound(ring_first.begin(), ring_first.end(), begin) -
+                                 ring_first.begin()) -
+                1;
+        std::size_t i = begin - ring_first[r];
+        for (std::size_t edge = begin; edge < end; ++edge, ++i) {
+          while (i == rings[r].size()) ++r, i = 0;
+          const std::size_t n = rings[r].size();
+          const Vec2 a = rings[r][i], b = rings[r][i + 1 == n ? 0 : i + 1];
+          const auto [first, last] = row_range(a, b);
+          for (int row = first; row <= last; ++row) {
+            add(static_cast<std::size_t>(row),
+                BucketEdge{std::min(a.x, b.x), r, static_cast<int>(i)});
+            // Taken on both passes alike: a maximum.
+            widest[row] = std::max(widest[row], std::abs(b.x - a.x));
+          }
+        }
+      });
+  std::vector<double> widest(part_widest.begin(), part_widest.begin() + rows);
+  for (int part = 1; part < bands; ++part) {
+    for (int row = 0; row < rows; ++row) {
+      widest[row] = std::max(widest[row], part_widest[std::size_t(part) * rows + row]);
+    }
+  }
   // A row's edges are sorted (for the walk below) only when the row has many queries: with a
   // few, one scan of its edges is cheaper.
   constexpr int kScanQueries = 8;

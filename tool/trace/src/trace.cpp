@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -185,44 +186,106 @@ std::vector<Ring> march(const AlphaImage& image, int threshold, unsigned threads
     bands[b] = march_band(image, threshold, first - 1, end - 1);
   });
 
-  std::vector<Vec2> points;
+  // Points are numbered on across the bands, as one march numbers them. Each band's points stay
+  // in the band (copying them into one array cost as much as marching on two threads): a
+  // global id is found in its band by the offsets.
+  std::vector<std::size_t> offsets(band_total + 1, 0);
+  for (int b = 0; b < band_total; ++b) offsets[b + 1] = offsets[b] + bands[b].points.size();
+  const std::size_t total = offsets.back();
   std::vector<int> next;
   if (band_total == 1) {
-    points = std::move(bands[0].points);
     next = std::move(bands[0].next);
   } else {
-    std::vector<int> offsets(band_total, 0);
-    for (int b = 1; b < band_total; ++b) {
-      offsets[b] = offsets[b - 1] + static_cast<int>(bands[b - 1].points.size());
-    }
-    const std::size_t total = static_cast<std::size_t>(offsets.back()) + bands.back().points.size();
-    points.reserve(total);
-    next.reserve(total);
-    for (int b = 0; b < band_total; ++b) {
+    next.resize(total);
+    parallel_for(bands.size(), band_total, [&](std::size_t b, unsigned) {
+      const int own = static_cast<int>(offsets[b]);
+      const int above = b > 0 ? static_cast<int>(offsets[b - 1]) : 0;
+      const std::vector<int>& bottom_above = b > 0 ? bands[b - 1].bottom : bands[b].bottom;
+      int* out = next.data() + own;
       // A point above is one of the band above's bottom row.
+      for (int id : bands[b].next) {
+        *out++ = id == kUnlinked ? kUnlinked : id >= 0 ? own + id : above + bottom_above[-id - 1];
+      }
+    });
+    // A band's last points are linked by the band below.
+    for (int b = 1; b < band_total; ++b) {
+      const int own = static_cast<int>(offsets[b]), above = static_cast<int>(offsets[b - 1]);
       auto global = [&](int id) {
-        return id >= 0 ? offsets[b] + id : offsets[b - 1] + bands[b - 1].bottom[-id - 1];
+        return id >= 0 ? own + id : above + bands[b - 1].bottom[-id - 1];
       };
-      points.insert(points.end(), bands[b].points.begin(), bands[b].points.end());
-      // A band's last points are linked by the band below (next_of_above).
-      for (int id : bands[b].next) next.push_back(id == kUnlinked ? kUnlinked : global(id));
       for (auto [from, to] : bands[b].next_of_above) next[global(from)] = global(to);
     }
   }
+  auto point_at = [&](std::size_t id) {
+    const std::size_t b =
+        std::upper_bound(offsets.begin(), offsets.end(), id) - offsets.begin() - 1;
+    return bands[b].points[id - offsets[b]];
+  };
 
-  std::vector<Ring> rings;
-  std::vector<char> visited(points.size(), 0);
-  for (std::size_t start = 0; start < points.size(); ++start) {
-    if (visited[start]) continue;
+  // A ring is numbered by its first point, as one walk over the points in order would find it.
+  // Each band walks the rings that lie in it on its own thread; a ring that crosses into another
+  // band is marked and walked whole afterwards.
+  constexpr char kUnseen = 0, kWalking = 2, kCrossing = 3, kTaken = 1;
+  std::vector<char> state(total, kUnseen);
+  std::vector<std::vector<std::pair<std::size_t, Ring>>> found(band_total);
+  // Where each band's walks of crossing rings began: a crossing ring's first point is one.
+  std::vector<std::vector<std::size_t>> crossing_starts(band_total);
+  auto take = [&](std::size_t start, auto&& point_of) {
     std::size_t length = 0;
-    for (int p = static_cast<int>(start); !visited[p]; p = next[p]) visited[p] = 2, ++length;
-    Ring& ring = rings.emplace_back();
+    for (std::size_t p = start; state[p] == kWalking; p = static_cast<std::size_t>(next[p])) {
+      state[p] = kTaken, ++length;
+    }
+    Ring ring;
     ring.reserve(length);
-    for (int p = static_cast<int>(start); visited[p] == 2; p = next[p]) {
-      visited[p] = 1;
-      ring.push_back(points[p]);
+    for (std::size_t p = start, k = 0; k < length; p = static_cast<std::size_t>(next[p]), ++k) {
+      ring.push_back(point_of(p));
+    }
+    return ring;
+  };
+  parallel_for(bands.size(), band_total, [&](std::size_t b, unsigned) {
+    const std::size_t own = offsets[b], end = offsets[b + 1];
+    const std::vector<Vec2>& points = bands[b].points;
+    for (std::size_t start = own; start < end; ++start) {
+      if (state[start] != kUnseen) continue;
+      std::size_t p = start;
+      while (p >= own && p < end && state[p] == kUnseen) {
+        state[p] = kWalking;
+        p = static_cast<std::size_t>(next[p]);
+      }
+      if (p == start) {
+        found[b].emplace_back(start, take(start, [&](std::size_t q) { return points[q - own]; }));
+      } else {
+        crossing_starts[b].push_back(start);
+        for (p = start; p >= own && p < end && state[p] == kWalking;) {
+          state[p] = kCrossing;
+          p = static_cast<std::size_t>(next[p]);
+        }
+      }
+    }
+  });
+  std::vector<std::pair<std::size_t, Ring>> crossing;
+  for (const std::vector<std::size_t>& starts : crossing_starts) {
+    for (std::size_t start : starts) {
+      if (state[start] != kCrossing) continue;
+      for (std::size_t p = start; state[p] == kCrossing; p = static_cast<std::size_t>(next[p])) {
+        state[p] = kWalking;
+      }
+      crossing.emplace_back(start, take(start, point_at));
     }
   }
+  std::size_t ring_count = crossing.size();
+  for (const auto& band_rings : found) ring_count += band_rings.size();
+  std::vector<std::pair<std::size_t, Ring>> numbered;
+  numbered.reserve(ring_count);
+  for (auto& band_rings : found)
+    std::move(band_rings.begin(), band_rings.end(), std::back_inserter(numbered));
+  std::move(crossing.begin(), crossing.end(), std::back_inserter(numbered));
+  std::inplace_merge(numbered.begin(), numbered.begin() + (ring_count - crossing.size()),
+                     numbered.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Ring> rings;
+  rings.reserve(ring_count);
+  for (auto& [first, ring] : numbered) rings.push_back(std::move(ring));
   return rings;
 }
 

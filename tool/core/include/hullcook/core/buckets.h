@@ -4,6 +4,8 @@
 // and the output contract's grids each built by hand.
 #pragma once
 
+#include "hullcook/core/parallel_for.h"
+
 #include <cstddef>
 #include <vector>
 
@@ -46,6 +48,51 @@ class Buckets {
     Entry* const entries = entries_.data();
     file([slots, entries](std::size_t bucket, const Entry& entry) {
       entries[slots[bucket]++] = entry;
+    });
+  }
+
+  // The same for items [0, item_count) filed in item order, split into `parts` consecutive
+  // ranges filed on threads of their own: file(part, begin, end, add) calls add(bucket, entry)
+  // for the items of [begin, end), twice, the same way both times. Each bucket holds its entries
+  // in item order, as one build filing every item in turn would: a counting sort with a count
+  // per part and bucket, so that every thread reads only its own items (building by bands of
+  // buckets made every thread walk every item).
+  template <typename File>
+  void build_in_parts(std::size_t bucket_count, std::size_t item_count, unsigned parts,
+                      File&& file) {
+    if (parts <= 1 || item_count < parts) {
+      build(bucket_count, [&](auto&& add) { file(0u, std::size_t{0}, item_count, add); });
+      return;
+    }
+    auto for_each_part = [&](auto&& filing) {
+      parallel_for(parts, parts, [&](std::size_t part, unsigned) {
+        file(static_cast<unsigned>(part), part * item_count / parts,
+             (part + 1) * item_count / parts, filing(part));
+      });
+    };
+    // Per part and bucket: its count, then the slot its next entry goes to.
+    std::vector<Offset> slots(parts * bucket_count, 0);
+    for_each_part([&](std::size_t part) {
+      return [counts = slots.data() + part * bucket_count](std::size_t bucket, const Entry&) {
+        ++counts[bucket];
+      };
+    });
+    start_.assign(bucket_count + 1, 0);
+    Offset running = 0;
+    for (std::size_t b = 0; b < bucket_count; ++b) {
+      start_[b] = running;
+      for (std::size_t part = 0; part < parts; ++part) {
+        Offset& slot = slots[part * bucket_count + b];
+        const Offset count = slot;
+        slot = running;
+        running += count;
+      }
+    }
+    start_[bucket_count] = running;
+    entries_.resize(static_cast<std::size_t>(running));
+    for_each_part([&](std::size_t part) {
+      return [own = slots.data() + part * bucket_count, entries = entries_.data()](
+                 std::size_t bucket, const Entry& entry) { entries[own[bucket]++] = entry; };
     });
   }
 
