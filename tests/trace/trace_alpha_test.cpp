@@ -188,6 +188,43 @@ TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
   }
 }
 
+// Rings that cross every band of rows the march is split into (a comb whose teeth run the
+// image's height, joined at the bottom, with slots cut in each tooth; a frame round the whole
+// image) are walked whole after the bands' own rings, and come out as on one thread, with the
+// specks between the teeth (issue 17).
+TEST(TraceAlpha, Issue17_RingsCrossingEveryBandAreTheSameOnThreads) {
+  constexpr int kSide = 640;
+  AlphaImage image{kSide, kSide, std::vector<std::uint8_t>(kSide * kSide, 0)};
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      const bool frame = (x < 3 || y < 3 || x >= kSide - 3 || y >= kSide - 3);
+      const bool tooth = x >= 8 && x < kSide - 8 && y >= 8 && y < kSide - 8 && x % 12 < 6 &&
+                         !(x % 12 >= 2 && x % 12 < 4 && y % 50 >= 10 && y % 50 < 40);
+      const bool base = x >= 8 && x < kSide - 8 && y >= kSide - 20 && y < kSide - 8;
+      const bool speck = x % 12 >= 8 && x % 12 < 10 && y % 16 < 3 && y >= 8 && y < kSide - 24;
+      image.alpha[y * kSide + x] = frame || tooth || base || speck ? 255 : 0;
+    }
+  }
+  TraceSettings settings;
+  settings.simplify = 0;
+  settings.min_blob_area = settings.min_hole_area = 0;
+  const TraceResult one = trace_alpha(image, settings);
+  // The frame, the comb (its slots are its holes) and the specks.
+  ASSERT_GE(one.regions.size(), 2u + 50u * 30u);
+  std::size_t slots = 0;
+  for (const Region& region : one.regions) slots = std::max(slots, region.holes.size());
+  EXPECT_GE(slots, 50u * 12u);
+  for (unsigned threads : {2u, 3u, 8u}) {
+    settings.threads = threads;
+    const TraceResult many = trace_alpha(image, settings);
+    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
+    for (std::size_t r = 0; r < one.regions.size(); ++r) {
+      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
+      EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
+    }
+  }
+}
+
 // In every cell a plank lies in a block's shallow notch, two pixels from its floor: simplified
 // coarsely, the block's chord over the notch cuts through the plank until the untangling refines
 // it, on several threads when asked (issue 17). Enough segments (over 16,384) that it takes

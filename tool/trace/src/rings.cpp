@@ -80,10 +80,18 @@ class Simplifier {
     keep_.resize(rings.size());
     const bool threaded = threads > 1 && rings.size() >= kItemsWorthAThread;
     std::vector<Stack> stacks(threaded ? threads : 1);
-    parallel_for(
-        rings.size(), threads,
-        [&](std::size_t r, unsigned worker) { start(static_cast<int>(r), stacks[worker]); },
-        kItemsWorthAThread);
+    // Rings handed out by ranges: one by one, the threads took turns writing neighbouring
+    // rings' vectors.
+    if (!threaded) {
+      for (std::size_t r = 0; r < rings.size(); ++r) start(static_cast<int>(r), stacks[0]);
+    } else {
+      parallel_for_ranges(rings.size(), threads, kRingsPerRange,
+                          [&](std::size_t begin, std::size_t end, unsigned worker) {
+                            for (std::size_t r = begin; r < end; ++r) {
+                              start(static_cast<int>(r), stacks[worker]);
+                            }
+                          });
+    }
   }
 
   // Refines until no two simplified edges cross or touch. Returns false if it gave up on some
@@ -520,9 +528,15 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
         // A counter-clockwise ring encloses what lies left of its edges: east of a downward edge.
         encloses = (b.y < a.y) == static_cast<bool>(outer[hit]);
       } else {
+        // Only edges whose y range holds p.y can cross its row, and each is in the row's
+        // bucket once: counting over the whole ring was quadratic where many specks face a
+        // long ring at its vertices (unsimplified outlines).
         encloses = false;
-        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-          const Vec2 c = ring[i], d = ring[(i + 1) % n];
+        const int row = row_of(r);
+        for (const BucketEdge* e = std::as_const(edges).begin(row);
+             e != std::as_const(edges).end(row); ++e) {
+          if (e->ring != hit) continue;
+          const Vec2 c = ring[e->index], d = ring[(e->index + 1) % ring.size()];
           if ((c.y > p.y) != (d.y > p.y) && p.x < c.x + (d.x - c.x) * (p.y - c.y) / (d.y - c.y)) {
             encloses = !encloses;
           }
