@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 
 namespace hullcook {
@@ -221,6 +222,48 @@ TEST(TraceAlpha, Issue17_RingsCrossingEveryBandAreTheSameOnThreads) {
     for (std::size_t r = 0; r < one.regions.size(); ++r) {
       EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
       EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
+    }
+  }
+}
+
+// Seeded random images (noise of soft blobs, random bars, saddles everywhere) traced on 1 and
+// on 2 and 7 threads, unsimplified and simplified: the same regions, ring for ring (issue 17).
+TEST(TraceAlpha, Issue17_RandomImagesTraceTheSameOnThreads) {
+  constexpr int kWidth = 701, kHeight = 523;  // over kPixelsWorthAThread, odd band heights
+  for (std::uint32_t seed : {1u, 2u}) {
+    std::uint32_t state = seed * 2654435761u;
+    auto random = [&] {
+      state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+      return state;
+    };
+    AlphaImage image{kWidth, kHeight, std::vector<std::uint8_t>(kWidth * kHeight, 0)};
+    for (std::uint8_t& alpha : image.alpha) alpha = random() % 8 == 0 ? 255 : 0;
+    for (int bar = 0; bar < 40; ++bar) {
+      const int x0 = random() % kWidth, y0 = random() % kHeight;
+      const int w = 1 + random() % 40, h = 1 + random() % 300;
+      const std::uint8_t alpha = random() % 2 ? 255 : static_cast<std::uint8_t>(random() % 256);
+      for (int y = y0; y < std::min(kHeight, y0 + h); ++y) {
+        for (int x = x0; x < std::min(kWidth, x0 + w); ++x) image.alpha[y * kWidth + x] = alpha;
+      }
+    }
+    for (double simplify : {0.0, 0.8}) {
+      TraceSettings settings;
+      settings.simplify = simplify;
+      settings.min_blob_area = settings.min_hole_area = 0;
+      const TraceResult one = trace_alpha(image, settings);
+      ASSERT_GT(one.regions.size(), 100u);
+      for (unsigned threads : {2u, 7u}) {
+        SCOPED_TRACE(testing::Message() << "seed " << seed << ", simplify " << simplify << ", "
+                                        << threads << " threads");
+        settings.threads = threads;
+        const TraceResult many = trace_alpha(image, settings);
+        ASSERT_EQ(many.regions.size(), one.regions.size());
+        EXPECT_EQ(many.traced_vertices, one.traced_vertices);
+        for (std::size_t r = 0; r < one.regions.size(); ++r) {
+          ASSERT_EQ(many.regions[r].outer, one.regions[r].outer) << "region " << r;
+          ASSERT_EQ(many.regions[r].holes, one.regions[r].holes) << "region " << r;
+        }
+      }
     }
   }
 }
