@@ -11,8 +11,10 @@
 // On samples/sprites and on a synthetic set written here (many sizes, holes, many blobs).
 // Options: --runs N (repetitions, default 5), --quick (fewer and smaller images),
 // --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it),
-// --write-docs DIR (also put this run's report in DIR/benchmarks.md, between its markers); any
-// other option (scripts/bench passes Google Benchmark's) is ignored.
+// --write-docs DIR (also put this run's report in DIR/benchmarks.md, between its markers),
+// --sprites DIR (also measure the PNG and WebP images under DIR, recursively: a game's own
+// sprites, side by side with their decode floor; images the cook refuses alone are left out and
+// counted); any other option (scripts/bench passes Google Benchmark's) is ignored.
 #include "bench_support.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
@@ -28,6 +30,7 @@
 #include <webp/encode.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <csetjmp>
@@ -42,6 +45,7 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -459,7 +463,9 @@ double floor_decode_ms(const fs::path& path) {
     std::vector<png_byte> pixels;
     std::vector<png_bytep> rows;
     std::size_t cursor[2] = {0, reinterpret_cast<std::size_t>(&bytes)};
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    // Warnings (e.g. a known incorrect sRGB profile) are not printed, as a game would not.
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr,
+                                             [](png_structp, png_const_charp) {});
     png_infop info = png_create_info_struct(png);
     libpng_read(png, info, pixels, rows, &bytes, cursor);
     png_destroy_read_struct(&png, &info, nullptr);
@@ -626,6 +632,48 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
   }
 }
 
+// The PNG and WebP images under dir (the decode floor is libpng's or libwebp's) that cook alone
+// at the benchmark's settings: a game's folder holds images the cook refuses (no alpha channel,
+// nothing opaque), which would stop a cook of the whole set.
+std::vector<fs::path> cookable_images(const fs::path& dir) {
+  std::vector<fs::path> candidates, files;
+  std::size_t refused = 0, other = 0, same_name = 0;
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::end(it);
+       it.increment(error)) {
+    if (!it->is_regular_file()) continue;
+    std::string extension = it->path().extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".png" || extension == ".webp") {
+      candidates.push_back(it->path());
+    } else {
+      other += is_image_file(it->path());
+    }
+  }
+  if (error)
+    report("\nbench_cook: cannot list %s: %s\n", dir.string().c_str(), error.message().c_str());
+  std::sort(candidates.begin(), candidates.end());
+  std::set<std::string> names;
+  for (const fs::path& path : candidates) {
+    // A cook names files by their file name, and refuses two of the same name.
+    if (!names.insert(path.filename().string()).second) {
+      ++same_name;
+      continue;
+    }
+    try {
+      cook({path}, cook_settings(1));
+      files.push_back(path);
+    } catch (const std::exception&) {
+      ++refused;
+    }
+  }
+  report(
+      "\nbench_cook: %s: %zu images cook alone; left out: %zu the cook refuses, %zu named as "
+      "another, %zu neither PNG nor WebP\n",
+      dir.string().c_str(), files.size(), refused, same_name, other);
+  return files;
+}
+
 // ---- 5. Scaling of the tracer and the cleaner with the outline's length
 // --------------------------
 
@@ -686,7 +734,9 @@ int main(int argc, char** argv) {
   int runs = 5;
   bool quick = false;
   std::optional<fs::path> docs;
+  std::vector<fs::path> sprite_dirs;
   for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--sprites") == 0 && i + 1 < argc) sprite_dirs.push_back(argv[++i]);
     if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
       runs = std::max(1, std::atoi(argv[++i]));
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
@@ -717,6 +767,10 @@ int main(int argc, char** argv) {
   std::sort(samples.begin(), samples.end());
   print_set("samples/sprites", samples, scratch, runs);
   print_set("synthetic set", write_synthetic_set(scratch / "synthetic", quick), scratch, runs);
+  for (const fs::path& dir : sprite_dirs) {
+    const std::vector<fs::path> files = cookable_images(dir);
+    if (!files.empty()) print_set(dir.string(), files, scratch, runs);
+  }
   print_scaling(std::min(runs, 3), quick);
   fs::remove_all(scratch);
   if (docs) write_docs(*docs);
