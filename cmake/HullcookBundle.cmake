@@ -8,7 +8,9 @@
 # current source directory, a relative OUTPUT from the current binary directory. Each asset is
 # named by its file name, or with BASE_DIR by its path relative to BASE_DIR, as
 # `hullcook cook BASE_DIR` names the images of a folder; OUTPUT then has the same bytes.
-# OPTIONS are passed to every cook (--tau 2 --ppu 32 ...). Fragments go to
+# OPTIONS are passed to every cook (--tau 2 --ppu 32 ...). Each cook runs on one thread unless
+# OPTIONS give --threads: the build tool runs the cooks side by side, and one sprite's own threads
+# cost more to start than they save (docs/benchmarks.md). Fragments go to
 # <current binary dir>/<name>.fragments/. Installed with the hullcook package: after
 # find_package(hullcook), hullcook::hullcook is the cooker.
 # The function keeps the policies it is defined with, whatever the calling project's minimum
@@ -38,6 +40,12 @@ function(hullcook_add_bundle)
   if(ARG_BASE_DIR)
     cmake_path(ABSOLUTE_PATH ARG_BASE_DIR BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE)
   endif()
+  set(threads --threads 1)
+  foreach(option IN LISTS ARG_OPTIONS)
+    if(option MATCHES "^--threads(=|$)")
+      set(threads "")
+    endif()
+  endforeach()
   set(fragment_dir "${CMAKE_CURRENT_BINARY_DIR}/${ARG_TARGET}.fragments")
   set(fragments "")
   set(names "")
@@ -75,7 +83,7 @@ function(hullcook_add_bundle)
     add_custom_command(
       OUTPUT "${fragment}"
       COMMAND ${tool} cook "${source}" -o "${output_argument}" --name "${name}"
-              --depfile "${fragment}.d" -q ${ARG_OPTIONS}
+              --depfile "${fragment}.d" -q ${threads} ${ARG_OPTIONS}
       DEPENDS "${source}" "$<TARGET_FILE:${tool}>"
       DEPFILE "${fragment}.d"
       WORKING_DIRECTORY "${working_directory}"

@@ -32,6 +32,23 @@ set(build ${WORK_DIR}/build)
 run(${CMAKE_COMMAND} -S ${CMAKE_CURRENT_LIST_DIR}/project -B ${build} -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DSPRITES_DIR=${sprites})
 
+# Each fragment's cook runs on one thread (the build tool runs them side by side), as the
+# project's OPTIONS give no --threads.
+file(GLOB_RECURSE build_files ${build}/build.ninja ${build}/build.make)
+set(cooks_on_one_thread 0)
+foreach(build_file IN LISTS build_files)
+  file(STRINGS ${build_file} lines REGEX "cook .*--depfile")
+  foreach(line IN LISTS lines)
+    if(NOT line MATCHES "-q --threads 1 --tau 1.5")
+      message(FATAL_ERROR "a fragment's cook does not run on one thread: ${line}")
+    endif()
+    math(EXPR cooks_on_one_thread "${cooks_on_one_thread} + 1")
+  endforeach()
+endforeach()
+if(cooks_on_one_thread LESS 3)
+  message(FATAL_ERROR "found ${cooks_on_one_thread} cook commands in [${build_files}], not 3")
+endif()
+
 set(fragments bubble.png level/grid.png level/danger.png)
 function(fragment_times out)
   set(times "")
