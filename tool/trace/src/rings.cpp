@@ -528,17 +528,34 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
         // A counter-clockwise ring encloses what lies left of its edges: east of a downward edge.
         encloses = (b.y < a.y) == static_cast<bool>(outer[hit]);
       } else {
-        // Only edges whose y range holds p.y can cross its row, and each is in the row's
-        // bucket once: counting over the whole ring was quadratic where many specks face a
-        // long ring at its vertices (unsimplified outlines).
-        encloses = false;
-        const int row = row_of(r);
-        for (const BucketEdge* e = std::as_const(edges).begin(row);
-             e != std::as_const(edges).end(row); ++e) {
-          if (e->ring != hit) continue;
-          const Vec2 c = ring[e->index], d = ring[(e->index + 1) % ring.size()];
-          if ((c.y > p.y) != (d.y > p.y) && p.x < c.x + (d.x - c.x) * (p.y - c.y) / (d.y - c.y)) {
-            encloses = !encloses;
+        // The ray meets the ring hit at its vertex v (v.y == p.y; the right end of a horizontal
+        // edge). The count below treats a vertex at p.y as below the ray, as a ray just above
+        // p.y would: that ray meets no edge of the ring hit between v and p, so where exactly
+        // one of v's edges crosses it, that edge is its nearest crossing and tells the side.
+        const std::size_t n = ring.size(), i = static_cast<std::size_t>(hit_edges[r]);
+        const std::size_t v = a.y == b.y   ? (a.x >= b.x ? i : (i + 1) % n)
+                              : a.y == p.y ? i
+                                           : (i + 1) % n;
+        const Vec2 before = ring[(v + n - 1) % n], at = ring[v], after = ring[(v + 1) % n];
+        const bool in_crosses = (before.y > p.y) != (at.y > p.y);
+        const bool out_crosses = (at.y > p.y) != (after.y > p.y);
+        if (in_crosses != out_crosses) {
+          const Vec2 from = in_crosses ? before : at, to = in_crosses ? at : after;
+          encloses = (to.y < from.y) == static_cast<bool>(outer[hit]);
+        } else {
+          // Both of v's edges cross that ray or neither does (v turns in y, or ends a
+          // horizontal edge, at p.y): counted. Only edges whose y range holds p.y can cross its
+          // row, and each is in the row's bucket once (counting over the whole ring was
+          // quadratic where many specks face a long ring at its vertices).
+          encloses = false;
+          const int row = row_of(r);
+          for (const BucketEdge* e = std::as_const(edges).begin(row);
+               e != std::as_const(edges).end(row); ++e) {
+            if (e->ring != hit) continue;
+            const Vec2 c = ring[e->index], d = ring[(e->index + 1) % ring.size()];
+            if ((c.y > p.y) != (d.y > p.y) && p.x < c.x + (d.x - c.x) * (p.y - c.y) / (d.y - c.y)) {
+              encloses = !encloses;
+            }
           }
         }
       }

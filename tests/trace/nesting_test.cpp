@@ -1,0 +1,138 @@
+// The tracer's ring nesting (tool/trace/src/rings.h, internal): which ring encloses which, and
+// which rings break the orientation rule (outer boundaries counter-clockwise, holes clockwise),
+// checked against a brute-force even-odd count.
+#include "rings.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace hullcook::trace_detail {
+namespace {
+
+Ring rectangle(double x0, double y0, double x1, double y1, bool outer) {
+  Ring ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  if ((signed_area(ring) > 0) != outer) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+Ring oriented(Ring ring, bool outer) {
+  if ((signed_area(ring) > 0) != outer) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+bool inside(const Ring& ring, Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2 c = ring[i], d = ring[(i + 1) % n];
+    if ((c.y > p.y) != (d.y > p.y) && p.x < c.x + (d.x - c.x) * (p.y - c.y) / (d.y - c.y)) {
+      in = !in;
+    }
+  }
+  return in;
+}
+
+// What nesting_parents must say of each ring, found by brute force: the ring a leftward ray from
+// its leftmost (then lowest) vertex meets first, vertices and horizontal edges included, and
+// whether that ring encloses it (tested at the ring's vertex average, which no other ring
+// touches in these cases).
+void expect_nesting_as_brute_force(const std::vector<Ring>& rings, const std::string& what) {
+  std::vector<char> misplaced;
+  const std::vector<int> parents = nesting_parents(rings, 1, &misplaced);
+  ASSERT_EQ(misplaced.size(), rings.size()) << what;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    Vec2 p = rings[r][0], middle{0, 0};
+    for (Vec2 v : rings[r]) {
+      if (v.x < p.x || (v.x == p.x && v.y < p.y)) p = v;
+      middle += v / static_cast<double>(rings[r].size());
+    }
+    int hit = -1;
+    double hit_x = std::numeric_limits<double>::lowest();
+    for (std::size_t s = 0; s < rings.size(); ++s) {
+      if (s == r) continue;
+      for (std::size_t i = 0, n = rings[s].size(); i < n; ++i) {
+        const Vec2 a = rings[s][i], b = rings[s][(i + 1) % n];
+        if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
+        const double x =
+            a.y == b.y ? std::max(a.x, b.x) : a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
+        if (x < p.x && x > hit_x) hit_x = x, hit = static_cast<int>(s);
+      }
+    }
+    const std::string ring = what + ", ring " + std::to_string(r);
+    if (hit < 0) {
+      EXPECT_EQ(parents[r], -1) << ring;
+      EXPECT_EQ(misplaced[r], 0) << ring;
+      continue;
+    }
+    const bool outer = signed_area(rings[r]) > 0, hit_outer = signed_area(rings[hit]) > 0;
+    const bool encloses = inside(rings[hit], middle);
+    EXPECT_EQ(misplaced[r] != 0, encloses != (outer != hit_outer)) << ring << ", hit " << hit;
+  }
+}
+
+// The ray from a ring's leftmost vertex meets the ring hit exactly at a vertex, in each way that
+// can happen: a vertex in a straight run (one of its edges crosses a ray just above the row), the
+// right end of a horizontal edge above or below the ring hit, and a turn in y (both edges or
+// neither cross), with the ring inside or beside the ring hit and either orientation.
+TEST(Nesting, RayThroughAVertexOfTheRingHitInEveryWay) {
+  const double py = 40;
+  for (bool small_outer : {false, true}) {
+    for (bool big_outer : {false, true}) {
+      const Ring small = rectangle(50, py, 60, py + 10, small_outer);
+      const std::vector<std::pair<std::string, Ring>> bigs = {
+          {"enclosing, a vertex on its left side",
+           oriented({{0, 0}, {100, 0}, {100, 100}, {0, 100}, {0, py}}, big_outer)},
+          {"beside, a vertex on its right side",
+           oriented({{0, 0}, {10, 0}, {10, py}, {10, 100}, {0, 100}}, big_outer)},
+          {"beside, its top edge at the row", rectangle(0, py, 10, py + 30, big_outer)},
+          {"beside, its bottom edge at the row", rectangle(0, py - 30, 10, py, big_outer)},
+          {"beside, a turn down at the row",
+           oriented({{0, py + 20}, {10, py}, {20, py + 20}}, big_outer)},
+          {"beside, a turn up at the row",
+           oriented({{0, py - 20}, {20, py - 20}, {10, py}}, big_outer)},
+          {"enclosing, a notch of its left side pointing at the row",
+           oriented({{0, 0}, {100, 0}, {100, 100}, {0, 100}, {0, py + 5}, {8, py}, {0, py - 5}},
+                    big_outer)},
+          {"enclosing, a step of its left side at the row",
+           oriented({{0, 0}, {100, 0}, {100, 100}, {5, 100}, {5, py}, {0, py}}, big_outer)},
+      };
+      for (const auto& [name, big] : bigs) {
+        expect_nesting_as_brute_force({big, small}, name + (small_outer ? ", outer" : ", hole") +
+                                                        (big_outer ? " in outer" : " in hole"));
+      }
+    }
+  }
+}
+
+// Seeded random rectangles on an integer grid, some nested, each of a random orientation: rows of
+// them share their top and bottom rows, so the rays meet vertices and horizontal edges often.
+TEST(Nesting, RandomRectanglesOnAGridAsByBruteForce) {
+  for (std::uint32_t seed = 1; seed <= 20; ++seed) {
+    std::uint32_t state = seed * 2654435761u;
+    auto random = [&](std::uint32_t below) {
+      state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+      return static_cast<int>(state % below);
+    };
+    std::vector<Ring> rings;
+    for (int row = 0; row < 6; ++row) {
+      for (int column = 0; column < 6; ++column) {
+        if (random(4) == 0) continue;
+        const int x0 = column * 12 + random(2), y0 = row * 12 + random(2);
+        const int x1 = column * 12 + 10 - random(2), y1 = row * 12 + 10 - random(2);
+        rings.push_back(rectangle(x0, y0, x1, y1, random(2) == 0));
+        if (random(2) == 0) {
+          rings.push_back(
+              rectangle(x0 + 2, y0 + 1 + random(2), x1 - 2 - random(2), y1 - 2, random(2) == 0));
+        }
+      }
+    }
+    expect_nesting_as_brute_force(rings, "seed " + std::to_string(seed));
+  }
+}
+
+}  // namespace
+}  // namespace hullcook::trace_detail
