@@ -1,11 +1,15 @@
-// The tracer's ring nesting (tool/trace/src/rings.h, internal): which ring encloses which, and
+// The tracer's ring geometry (tool/trace/src/rings.h, internal): which ring encloses which, and
 // which rings break the orientation rule (outer boundaries counter-clockwise, holes clockwise),
-// checked against a brute-force even-odd count.
+// checked against a brute-force even-odd count; and the simplification of long rings, checked
+// against a plain Douglas-Peucker.
 #include "rings.h"
+
+#include "hullcook/core/geometry.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -131,6 +135,95 @@ TEST(Nesting, RandomRectanglesOnAGridAsByBruteForce) {
       }
     }
     expect_nesting_as_brute_force(rings, "seed " + std::to_string(seed));
+  }
+}
+
+// Douglas-Peucker as the simplifier runs it, plainly: from the leftmost (then lowest) vertex and
+// the vertex farthest from it, each stretch split at its interior vertex farthest from its chord,
+// the first of equal distances, while that lies more than eps away.
+Ring plain_douglas_peucker(const Ring& ring, double eps) {
+  const int n = static_cast<int>(ring.size());
+  auto farthest = [&](int from, int to, Vec2 a, Vec2 b) {
+    int index = -1;
+    double best = -1;
+    for (int i = (from + 1) % n; i != to; i = (i + 1) % n) {
+      const double distance = std::sqrt(point_segment_distance_squared(ring[i], a, b));
+      if (distance > best) best = distance, index = i;
+    }
+    return std::pair{index, best};
+  };
+  int a = 0;
+  for (int i = 1; i < n; ++i) {
+    if (ring[i].x < ring[a].x || (ring[i].x == ring[a].x && ring[i].y < ring[a].y)) a = i;
+  }
+  int b = 0;
+  double far = -1;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 v = ring[i] - ring[a];
+    const double distance = std::sqrt(v.x * v.x + v.y * v.y);
+    if (distance > far) far = distance, b = i;
+  }
+  std::vector<char> keep(n, 0);
+  keep[a] = keep[b] = 1;
+  std::vector<std::pair<int, int>> stack{{a, b}, {b, a}};
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const auto [m, distance] = farthest(i, j, ring[i], ring[j]);
+    if (m < 0 || distance <= eps) continue;
+    keep[m] = 1;
+    stack.emplace_back(i, m);
+    stack.emplace_back(m, j);
+  }
+  Ring kept;
+  for (int i = 0; i < n; ++i) {
+    if (keep[i]) kept.push_back(ring[i]);
+  }
+  return kept;
+}
+
+// Rings of thousands of vertices are searched for their farthest vertex by blocks, skipping
+// those whose bounding box lies nearer than a distance already found (a plain scan peeled one
+// tooth a level off a comb: quadratic). The vertices kept must be the plain scan's, ties
+// included: combs whose teeth end on one line (every tip at the same distance from a chord along
+// them) and combs of jittered teeth (seeded), with the teeth far enough apart for no chord to
+// come near another tooth.
+TEST(Simplify, LongRingsKeepThePlainDouglasPeuckerVertices) {
+  for (std::uint32_t seed = 0; seed <= 6; ++seed) {
+    std::uint32_t state = seed * 2654435761u + 1;
+    auto jitter = [&] {
+      if (seed == 0) return 0.0;
+      state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+      return (static_cast<double>(state % 1000) / 1000 - 0.5) * 0.6;
+    };
+    // Counter-clockwise (y up): along the base, then up and down each tooth in unit steps. The
+    // corners are exact; the steps between them move off their line by the jitter, which is
+    // small enough to keep the ring simple.
+    Ring comb;
+    const int teeth = 100 + 10 * static_cast<int>(seed), height = 40;
+    comb.push_back({0, 0});
+    for (int x = 1; x < 10 * teeth; ++x) comb.push_back({double(x), jitter() * 0.1});
+    comb.push_back({10.0 * teeth, 0});
+    for (int t = teeth - 1; t >= 0; --t) {
+      const double x0 = 10.0 * t;
+      comb.push_back({x0 + 10, 1});
+      for (int y = 2; y < height; ++y) comb.push_back({x0 + 10 + jitter() * 0.3, double(y)});
+      comb.push_back({x0 + 10, double(height)});
+      for (int x = 1; x < 4; ++x) comb.push_back({x0 + 10 - x, height + jitter() * 0.3});
+      comb.push_back({x0 + 6, double(height)});
+      for (int y = height - 1; y > 1; --y) comb.push_back({x0 + 6 + jitter() * 0.3, double(y)});
+      comb.push_back({x0 + 6, 1});
+      // The floor of the slot before the next tooth (the last tooth's leads to the start).
+      for (int x = 1; x < 6 && t > 0; ++x) comb.push_back({x0 + 6 - x, 1 + jitter() * 0.3});
+    }
+    ASSERT_GT(comb.size(), 8000u);  // searched by blocks
+    ASSERT_GT(signed_area(comb), 0);
+    for (double eps : {0.05, 0.25}) {
+      const std::vector<Ring> simplified = simplify_rings({comb}, {-1}, eps);
+      ASSERT_EQ(simplified.size(), 1u);
+      EXPECT_EQ(simplified[0], plain_douglas_peucker(comb, eps))
+          << "seed " << seed << ", eps " << eps;
+    }
   }
 }
 
