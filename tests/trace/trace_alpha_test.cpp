@@ -160,6 +160,21 @@ TEST(TraceAlpha, EmptyAndInconsistentImages) {
   EXPECT_THROW(trace_alpha(wrong, TraceSettings{}), InputError);
 }
 
+// Traces image with settings on each thread count: the regions of one, ring for ring.
+void expect_same_regions_on_threads(const AlphaImage& image, TraceSettings settings,
+                                    const TraceResult& one,
+                                    std::initializer_list<unsigned> thread_counts) {
+  for (unsigned threads : thread_counts) {
+    settings.threads = threads;
+    const TraceResult many = trace_alpha(image, settings);
+    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
+    for (std::size_t r = 0; r < one.regions.size(); ++r) {
+      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
+      EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
+    }
+  }
+}
+
 // One huge image's rings are nested and simplified on several threads when asked (issue 17): the
 // same regions, whatever the count. Enough edges (over 16,384) that nesting them takes threads.
 TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
@@ -178,15 +193,7 @@ TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
   settings.simplify = 0.5;
   const TraceResult one = trace_alpha(image, settings);
   ASSERT_EQ(one.regions.size(), 400u + 200u);
-  for (unsigned threads : {2u, 3u, 8u}) {
-    settings.threads = threads;
-    const TraceResult many = trace_alpha(image, settings);
-    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
-    for (std::size_t r = 0; r < one.regions.size(); ++r) {
-      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
-      EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
-    }
-  }
+  expect_same_regions_on_threads(image, settings, one, {2u, 3u, 8u});
 }
 
 // Rings that cross every band of rows the march is split into (a comb whose teeth run the
@@ -215,15 +222,7 @@ TEST(TraceAlpha, Issue17_RingsCrossingEveryBandAreTheSameOnThreads) {
   std::size_t slots = 0;
   for (const Region& region : one.regions) slots = std::max(slots, region.holes.size());
   EXPECT_GE(slots, 50u * 12u);
-  for (unsigned threads : {2u, 3u, 8u}) {
-    settings.threads = threads;
-    const TraceResult many = trace_alpha(image, settings);
-    ASSERT_EQ(many.regions.size(), one.regions.size()) << threads << " threads";
-    for (std::size_t r = 0; r < one.regions.size(); ++r) {
-      EXPECT_EQ(many.regions[r].outer, one.regions[r].outer) << threads << " threads, region " << r;
-      EXPECT_EQ(many.regions[r].holes, one.regions[r].holes) << threads << " threads, region " << r;
-    }
-  }
+  expect_same_regions_on_threads(image, settings, one, {2u, 3u, 8u});
 }
 
 // Seeded random images (noise of soft blobs, random bars, saddles everywhere) traced on 1 and
