@@ -251,19 +251,24 @@ class Simplifier {
         farthest.offer(i, point_segment_distance_squared(ring[i], a, b));
       }
     };
-    // A distance to beat first: the chunk with the largest bound, scanned.
+    // A distance to beat first: the chunk with the largest bound, scanned. The bounds are kept
+    // for the second pass, in the chunks' order (scratch per thread).
+    thread_local std::vector<double> bounds;
+    bounds.clear();
     int best_begin = -1, best_end = -1;
     double best_bound = -1;
     for_each_chunk([&](int begin, int end) {
-      const double block_bound = bound(boxes[begin / kBlock]);
-      if (block_bound > best_bound) best_bound = block_bound, best_begin = begin, best_end = end;
+      bounds.push_back(bound(boxes[begin / kBlock]));
+      if (bounds.back() > best_bound)
+        best_bound = bounds.back(), best_begin = begin, best_end = end;
     });
     Farthest probe;
     if (best_begin >= 0) scan(best_begin, best_end, probe);
     const double found = best_begin >= 0 ? probe.distance() : -1;
     Farthest farthest;
+    std::size_t chunk = 0;
     for_each_chunk([&](int begin, int end) {
-      if (bound(boxes[begin / kBlock]) < std::max(found, farthest.distance())) return;
+      if (bounds[chunk++] < std::max(found, farthest.distance())) return;
       scan(begin, end, farthest);
     });
     return farthest.index();
