@@ -14,7 +14,8 @@
 // --write-docs DIR (also put this run's report in DIR/benchmarks.md, between its markers),
 // --sprites DIR (also measure the PNG and WebP images under DIR, recursively: a game's own
 // sprites, side by side with their decode floor; images the cook refuses alone are left out and
-// counted); any other option (scripts/bench passes Google Benchmark's) is ignored.
+// counted, and images of one file name in several folders are all measured); any other option
+// (scripts/bench passes Google Benchmark's) is ignored.
 #include "bench_support.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
@@ -42,10 +43,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <random>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -635,9 +636,12 @@ void print_set(const std::string& title, const std::vector<fs::path>& files,
 // The PNG and WebP images under dir (the decode floor is libpng's or libwebp's) that cook alone
 // at the benchmark's settings: a game's folder holds images the cook refuses (no alpha channel,
 // nothing opaque), which would stop a cook of the whole set.
-std::vector<fs::path> cookable_images(const fs::path& dir) {
+// A cook given files names each by its file name and refuses two of one name, which a game's
+// folders often hold (the same sprites at 1x, 2x and 3x): such an image is measured through a
+// link in links_dir named by its path under dir, as a cook of the directory would name it.
+std::vector<fs::path> cookable_images(const fs::path& dir, const fs::path& links_dir) {
   std::vector<fs::path> candidates, files;
-  std::size_t refused = 0, other = 0, same_name = 0;
+  std::size_t refused = 0, other = 0, linked = 0;
   std::error_code error;
   for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::end(it);
        it.increment(error)) {
@@ -653,24 +657,33 @@ std::vector<fs::path> cookable_images(const fs::path& dir) {
   if (error)
     report("\nbench_cook: cannot list %s: %s\n", dir.string().c_str(), error.message().c_str());
   std::sort(candidates.begin(), candidates.end());
-  std::set<std::string> names;
-  for (const fs::path& path : candidates) {
-    // A cook names files by their file name, and refuses two of the same name.
-    if (!names.insert(path.filename().string()).second) {
-      ++same_name;
-      continue;
+  std::map<std::string, std::size_t> name_count;
+  for (const fs::path& found : candidates) ++name_count[found.filename().string()];
+  for (const fs::path& found : candidates) {
+    fs::path path = found;
+    if (name_count[found.filename().string()] > 1) {
+      std::string name = found.lexically_relative(dir).generic_string();
+      std::replace(name.begin(), name.end(), '/', '~');
+      path = links_dir / name;
+      fs::create_directories(links_dir);
+      // "a/b~c.png" and "a~b/c.png" would share a link's name: the second is numbered.
+      if (fs::exists(fs::symlink_status(path)))
+        path = links_dir / (std::to_string(linked) + "~" + name);
+      fs::create_symlink(fs::absolute(found), path);
     }
     try {
       cook({path}, cook_settings(1));
       files.push_back(path);
+      if (path != found) ++linked;
     } catch (const std::exception&) {
       ++refused;
     }
   }
   report(
-      "\nbench_cook: %s: %zu images cook alone; left out: %zu the cook refuses, %zu named as "
-      "another, %zu neither PNG nor WebP\n",
-      dir.string().c_str(), files.size(), refused, same_name, other);
+      "\nbench_cook: %s: %zu images cook alone (%zu of them sharing a file name, measured "
+      "through links named by their path); left out: %zu the cook refuses, %zu neither PNG "
+      "nor WebP\n",
+      dir.string().c_str(), files.size(), linked, refused, other);
   return files;
 }
 
@@ -767,8 +780,10 @@ int main(int argc, char** argv) {
   std::sort(samples.begin(), samples.end());
   print_set("samples/sprites", samples, scratch, runs);
   print_set("synthetic set", write_synthetic_set(scratch / "synthetic", quick), scratch, runs);
-  for (const fs::path& dir : sprite_dirs) {
-    const std::vector<fs::path> files = cookable_images(dir);
+  for (std::size_t d = 0; d < sprite_dirs.size(); ++d) {
+    const fs::path& dir = sprite_dirs[d];
+    const std::vector<fs::path> files =
+        cookable_images(dir, scratch / ("sprite-links-" + std::to_string(d)));
     if (!files.empty()) print_set(dir.string(), files, scratch, runs);
   }
   print_scaling(std::min(runs, 3), quick);
