@@ -138,6 +138,41 @@ TEST(Nesting, RandomRectanglesOnAGridAsByBruteForce) {
   }
 }
 
+// Enough edges (over 2^18) that nesting splits its bucket grid into bands of rows, one per
+// thread: the parents and the misplaced rings of one thread, whatever the count. Rectangles on a
+// grid, some with a ring inside, either orientation (so some misplaced), their rows staggered.
+TEST(Nesting, Issue17_BandsOnThreadsGiveTheOneThreadParents) {
+  std::uint32_t state = 20261205u;
+  auto random = [&](std::uint32_t below) {
+    state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+    return static_cast<int>(state % below);
+  };
+  std::vector<Ring> rings;
+  std::size_t edges = 0;
+  for (int row = 0; row < 300; ++row) {
+    for (int column = 0; column < 300; ++column) {
+      if (random(4) == 0) continue;
+      const int x0 = column * 12 + random(2), y0 = row * 12 + random(3);
+      const int x1 = column * 12 + 10 - random(2), y1 = row * 12 + 10 - random(3);
+      rings.push_back(rectangle(x0, y0, x1, y1, random(8) != 0));
+      if (random(2) == 0) {
+        rings.push_back(
+            rectangle(x0 + 2, y0 + 1 + random(2), x1 - 2 - random(2), y1 - 2, random(8) == 0));
+      }
+    }
+  }
+  for (const Ring& ring : rings) edges += ring.size();
+  ASSERT_GE(edges, std::size_t{1} << 18);
+  std::vector<char> misplaced_one;
+  const std::vector<int> parents_one = nesting_parents(rings, 1, &misplaced_one);
+  ASSERT_GT(std::count(misplaced_one.begin(), misplaced_one.end(), 1), 0);
+  for (unsigned threads : {2u, 3u}) {
+    std::vector<char> misplaced;
+    EXPECT_EQ(nesting_parents(rings, threads, &misplaced), parents_one) << threads << " threads";
+    EXPECT_EQ(misplaced, misplaced_one) << threads << " threads";
+  }
+}
+
 // Douglas-Peucker as the simplifier runs it, plainly: from the leftmost (then lowest) vertex and
 // the vertex farthest from it, each stretch split at its interior vertex farthest from its chord,
 // the first of equal distances, while that lies more than eps away.

@@ -176,7 +176,9 @@ void expect_same_regions_on_threads(const AlphaImage& image, TraceSettings setti
 }
 
 // One huge image's rings are nested and simplified on several threads when asked (issue 17): the
-// same regions, whatever the count. Enough edges (over 16,384) that nesting them takes threads.
+// same regions, whatever the count. Enough edges (over 16,384) that untangling them takes
+// threads (nesting takes them from 2^18 edges on: Nesting.Issue17_BandsOnThreadsGiveTheOneThread-
+// Parents).
 TEST(TraceAlpha, Issue17_ThreadsGiveTheSameRegions) {
   constexpr int kSide = 600;
   AlphaImage image{kSide, kSide, std::vector<std::uint8_t>(kSide * kSide, 0)};
