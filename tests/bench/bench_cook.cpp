@@ -679,11 +679,14 @@ std::vector<fs::path> cookable_images(const fs::path& dir, const fs::path& links
       ++refused;
     }
   }
+  const std::string links =
+      linked == 0 ? std::string()
+                  : " (" + std::to_string(linked) +
+                        " of them sharing a file name, measured through links named by their path)";
   report(
-      "\nbench_cook: %s: %zu images cook alone (%zu of them sharing a file name, measured "
-      "through links named by their path); left out: %zu the cook refuses, %zu neither PNG "
-      "nor WebP\n",
-      dir.string().c_str(), files.size(), linked, refused, other);
+      "\nbench_cook: %s: %zu images cook alone%s; left out: %zu the cook refuses, %zu neither "
+      "PNG nor WebP\n",
+      dir.string().c_str(), files.size(), links.c_str(), refused, other);
   return files;
 }
 
