@@ -57,6 +57,7 @@ class Farthest {
   }
   int index() const { return index_; }
   double distance() const { return best_; }
+  double distance2() const { return best2_; }
 
  private:
   int index_ = -1;
@@ -282,7 +283,13 @@ class Simplifier {
     std::size_t chunk = 0;
     for_each_chunk([&](int begin, int end) {
       if (bounds[chunk++] < std::max(found, farthest.distance())) return;
-      scan(begin, end, farthest);
+      // The probed chunk's first farthest vertex stands for it: the others there replace
+      // neither it nor what came before.
+      if (begin == best_begin) {
+        farthest.offer(probe.index(), probe.distance2());
+      } else {
+        scan(begin, end, farthest);
+      }
     });
     return farthest.index();
   }
