@@ -293,6 +293,49 @@ TEST(Decompose, HoleIsKeptOnlyWithinTolerance) {
   for (const Piece& piece : opened) EXPECT_TRUE(piece.component.holes.empty());
 }
 
+// A comb's cuts peel one tooth at a time (every notch is as deep as the next), so a tree that
+// kept every split node's outline held a copy of the comb per tooth: 0.5 GB at 16,000 vertices.
+// Without coarser levels the split nodes give their outlines up, and the pieces are the same.
+TEST(Decompose, TreeWithoutCoarserLevelsHoldsItsLeavesOnlyOnAComb) {
+  constexpr int kTeeth = 500;
+  // Counter-clockwise: the base from left to right, then the teeth (1 wide, 99 above a base 1
+  // thick, 1 apart) from right to left.
+  Ring comb{{0, 0}, {2.0 * kTeeth - 1, 0}};
+  for (int t = kTeeth - 1; t >= 0; --t) {
+    comb.insert(comb.end(), {{2.0 * t + 1, 100}, {2.0 * t, 100}});
+    if (t > 0) comb.insert(comb.end(), {{2.0 * t, 1}, {2.0 * t - 1, 1}});
+  }
+  const Region region = clean_and_validate({Region{comb, {}}}, "comb")[0];
+  const std::size_t n = region.outer.size();
+  for (Measure measure : {Measure::sl, Measure::h1}) {
+    SCOPED_TRACE(measure_name(measure));
+    DecomposeSettings settings{1.0, measure};
+    const DecompositionTree kept = decompose(region, settings);
+    settings.keep_coarser_levels = false;
+    const DecompositionTree leaves = decompose(region, settings);
+    ASSERT_EQ(kept.nodes().size(), leaves.nodes().size());
+    std::size_t kept_vertices = 0, leaf_vertices = 0;
+    for (std::size_t id = 0; id < kept.nodes().size(); ++id) {
+      const auto& node = leaves.nodes()[id];
+      EXPECT_EQ(node.component.outer.empty(), !node.is_leaf());
+      kept_vertices += kept.nodes()[id].component.outer.size();
+      leaf_vertices += node.component.outer.size();
+    }
+    // Kept: a copy of the comb per tooth, about n^2 / 8 vertices; leaves: the comb's own, once
+    // (plus each cut's two ends).
+    EXPECT_GT(kept_vertices, 10 * n);
+    EXPECT_LT(leaf_vertices, 2 * n);
+    const std::vector<Piece> a = kept.pieces_at(1.0), b = leaves.pieces_at(1.0);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].component.outer, b[k].component.outer);
+      EXPECT_EQ(a[k].hull, b[k].hull);
+    }
+    EXPECT_GT(kept.pieces_at(1000.0).size(), 0u);
+    EXPECT_THROW(leaves.pieces_at(1000.0), std::logic_error);
+  }
+}
+
 // Models scaled towards either end of the coordinates .poly files accept (spans from 1e-140,
 // coordinates to 1e150) decompose within the contract. Before the enclosing circle was computed
 // on scaled differences, τ = 1% of R was 0 for the monkey at 1e-140 (445 pieces instead of 105)

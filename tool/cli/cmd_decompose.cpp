@@ -50,7 +50,7 @@ int run_decompose(const DecomposeOptions& options) {
     refuse_sliver_regions({regions[r]}, options.input, r + 1);
   }
   const double tau = tolerance.resolve(enclosing_radius(regions));
-  const DecomposeSettings settings{tau, *measure, options.sc, options.sd};
+  const DecomposeSettings settings{tau, *measure, options.sc, options.sd, options.max_pieces > 0};
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Piece> pieces;

@@ -499,6 +499,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   decompose_settings.measure = *parse_measure(settings.measure);
   decompose_settings.sc = settings.sc;
   decompose_settings.sd = settings.sd;
+  decompose_settings.keep_coarser_levels = level_taus.size() > 1 || settings.max_pieces > 0;
   auto decompose_start = Clock::now();
   std::optional<AssetDecomposer> decomposer(std::in_place, regions, decompose_settings, threads);
   if (settings.max_pieces > 0) {
@@ -526,6 +527,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   auto split = [&](const Region& component, double tau) {
     DecomposeSettings finer = decompose_settings;
     finer.tau = tau;
+    finer.keep_coarser_levels = false;
     return to_cooked(decompose(component, finer).pieces_at(tau));
   };
   // Every level is checked before the asset is returned, so that a broken one stops the cook

@@ -78,6 +78,7 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   DecompositionTree tree;
   tree.tau_ = settings.tau;
   tree.measure_ = settings.measure;
+  tree.keep_coarser_levels_ = settings.keep_coarser_levels;
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
   // Under every measure but H2 a child inherits the values of the pockets it keeps whole, and
@@ -143,6 +144,7 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     hints.push_back(std::move(child_hints.first));
     hints.push_back(std::move(child_hints.second));
     auto& node = tree.nodes_[std::size_t(id)];
+    if (!settings.keep_coarser_levels) node.component = Region();
     node.witness = witness;
     node.children[0] = first;
     node.children[1] = first + 1;
@@ -176,6 +178,9 @@ void DecompositionTree::for_each_piece_at(double tau, Take take) const {
     stack.pop_back();
     const Node& node = nodes_[std::size_t(id)];
     if (node.is_leaf() || node.concavity <= tau) {
+      if (!node.is_leaf() && !keep_coarser_levels_) {
+        throw std::logic_error("pieces_at: a coarser level than the tree was built to keep");
+      }
       take(std::size_t(id));
     } else {
       stack.push_back(node.children[1]);
