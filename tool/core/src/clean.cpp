@@ -1,5 +1,6 @@
 #include "hullcook/core/clean.h"
 
+#include "crossing_sweep.h"
 #include "hullcook/core/buckets.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
@@ -64,11 +65,8 @@ std::string format_point(Vec2 p) {
   return buffer;
 }
 
-struct Edge {
-  int ring;  // 0 = outer, h = hole h (1-based)
-  std::size_t index;
-  Vec2 a, b;
-};
+using detail::RingEdge;
+using Edge = RingEdge;
 
 struct Crossing {
   const Edge* first;
@@ -76,9 +74,7 @@ struct Crossing {
 };
 
 bool adjacent(const Edge& e, const Edge& f, const std::vector<std::size_t>& ring_sizes) {
-  if (e.ring != f.ring) return false;
-  const std::size_t n = ring_sizes[static_cast<std::size_t>(e.ring)];
-  return (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
+  return detail::consecutive(e, f, ring_sizes);
 }
 
 // A uniform grid over the edges in which each edge is entered in the cells its segment passes
@@ -98,6 +94,19 @@ class EdgeGrid {
         static_cast<std::size_t>(std::sqrt(double(edges.size()))), 1, 1024));
     x_ = Axis(min_x, max_x, side_);
     y_ = Axis(min_y, max_y, side_);
+    // The cells a segment passes through are about as many as it is long in cells, across and
+    // down: when the edges are long (the spikes of a star) the grid alone is superlinear.
+    double entries = 0.0;
+    for (const Edge& e : edges) {
+      entries += std::abs(x_.cell_coordinate(e.b.x) - x_.cell_coordinate(e.a.x)) +
+                 std::abs(y_.cell_coordinate(e.b.y) - y_.cell_coordinate(e.a.y)) + 1.0;
+    }
+    dense_ = entries > kEntriesPerEdge * double(edges.size());
+    if (!dense_) build(edges);
+  }
+
+  // Enters the edges in their cells (the constructor leaves a dense grid empty).
+  void build(const std::vector<Edge>& edges) {
     cells_.build(static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_),
                  [&](auto&& add) {
                    for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -135,12 +144,26 @@ class EdgeGrid {
     }
   }
 
+  // Whether its edges are too long for a grid to pay (and it was not built, yet).
+  bool dense() const { return dense_; }
+
+  // The pairs of edges that share a cell, counted once per cell they share.
+  double pairs_sharing_cells() const {
+    double pairs = 0.0;
+    for (std::size_t cell = 0; cell < std::size_t(side_) * std::size_t(side_); ++cell) {
+      const double count = double(end(cell) - begin(cell));
+      pairs += count * (count - 1.0) / 2.0;
+    }
+    return pairs;
+  }
+
   // The edges entered in a cell, in increasing order.
   const std::size_t* begin(std::size_t cell) const { return cells_.begin(cell); }
   const std::size_t* end(std::size_t cell) const { return cells_.end(cell); }
 
  private:
   static constexpr double kMargin = 1e-9;
+  static constexpr double kEntriesPerEdge = 16.0;
 
   // Maps a coordinate to [0, side] in cells.
   struct Axis {
@@ -162,9 +185,13 @@ class EdgeGrid {
   }
 
   int side_ = 1;
+  bool dense_ = false;
   Axis x_, y_;
   Buckets<std::size_t> cells_;  // the edges entered in each cell
 };
+
+// Beyond this many pairs per edge sharing grid cells, the sweep is faster than the grid.
+constexpr double kGridPairsPerEdge = 128.0;
 
 // The first crossing in (ring, index) order: the first edge that meets a non-adjacent edge, and
 // the first edge it meets. Each pair that shares a cell is tested once.
@@ -189,7 +216,14 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
     }
     return std::nullopt;
   }
-  const EdgeGrid grid(edges);
+  EdgeGrid grid(edges);
+  // Long edges side by side (a star's spikes, a comb's teeth) share cells by the thousand, and
+  // testing every pair that shares one is quadratic: then the sweep decides, in O(n log n), and
+  // the grid is built to name the first crossing only when there is one.
+  if (grid.dense() || grid.pairs_sharing_cells() > kGridPairsPerEdge * double(edges.size())) {
+    if (!detail::find_crossing_by_sweep(edges, ring_sizes)) return std::nullopt;
+  }
+  if (grid.dense()) grid.build(edges);
   // tested_with[j] == i: the pair (i, j) was tested in an earlier cell of edge i.
   std::vector<std::size_t> tested_with(edges.size(), edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
