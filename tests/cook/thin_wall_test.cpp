@@ -322,5 +322,37 @@ TEST(Issue19Fuzz, SpikesAreRefusedUpToTheRefusalWidthAndCutWithinContractBeyond)
   EXPECT_NO_THROW(refuse_sliver_regions({Region{flat, {}}}, "flat.poly"));
 }
 
+// A star of long spikes from a small core: every spike's edges pass by the core's corners, which
+// share a few grid cells, so the grid's cells tested every edge against all of them (a star of 40,000
+// vertices: 800 million tests); a k-d tree finds each edge's near corners instead. The valid star
+// is accepted, and a hole a hair from a spike's edge is named.
+TEST(ThinWalls, CrowdedCornersOfALongStarAreCheckedNearEachEdge) {
+  const int spikes = 20000;
+  Ring star;
+  for (int i = 0; i < spikes; ++i) {
+    const double a = 2 * M_PI * i / spikes, b = 2 * M_PI * (i + 0.5) / spikes;
+    star.push_back({1000 * std::cos(a), 1000 * std::sin(a)});
+    star.push_back({10 * std::cos(b), 10 * std::sin(b)});
+  }
+  const std::vector<Region> valid = clean_and_validate({Region{star, {}}}, "star.poly");
+  EXPECT_NO_THROW(refuse_sliver_regions(valid, "star.poly"));
+  // Inside spike 0 (1.6e-3 wide there), 1e-7 from its lower edge (from the core at minus half a
+  // spike to the tip at angle 0), 500 along it: far below the refusal width of that edge (2e-6).
+  const Vec2 from = star[star.size() - 1], to = star[0];
+  const Vec2 along = (to - from) / std::hypot(to.x - from.x, to.y - from.y);
+  const Vec2 inward{-along.y, along.x};
+  const Vec2 near = from + 500.0 * along + 1e-7 * inward;
+  const Ring hole{near, near + 0.001 * along + 0.0002 * inward, near + 0.002 * along};
+  const std::vector<Region> walled = clean_and_validate({Region{star, {hole}}}, "star.poly");
+  try {
+    refuse_sliver_regions(walled, "star.poly");
+    ADD_FAILURE() << "a hole 1e-7 from the outer boundary was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("hole 1 comes within 1e-07 of the outer boundary"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -3,6 +3,7 @@
 #include "cell_grid.h"
 #include "hullcook/core/parallel_for.h"
 #include "outline_distance.h"
+#include "point_tree.h"
 
 #include "hullcook/core/buckets.h"
 #include "hullcook/core/clean.h"
@@ -73,6 +74,9 @@ std::optional<std::string> sliver_defect(const Region& region, double slack) {
 // only the length of the edge between them) is a spike or a neck no wider than that: issue 19's
 // fuzzing found a spike 6e7 long and 1.2 wide beside a longer one that set the slack to 0.83;
 // every piece holding its tip was a sliver. At the contract's resolution its sides touch.
+// Beyond this many pairs of corners sharing a cell per corner, the grid's cells test too many.
+constexpr double kCrowdedCornerPairs = 64.0;
+
 std::optional<std::string> thin_wall_defect(const Region& region, double slack) {
   std::vector<const Ring*> rings{&region.outer};
   for (const Ring& hole : region.holes) rings.push_back(&hole);
@@ -109,38 +113,67 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
   auto ring_name = [](std::size_t r) {
     return r == 0 ? std::string("the outer boundary") : "hole " + std::to_string(r);
   };
+  // Corners crowded into a few cells (a star's core, which every spike passes by) make the
+  // cells' tests quadratic: then a k-d tree finds each edge's near corners, and of its defects the
+  // one the cells would have met first is reported.
+  double crowding = 0.0;
+  for (std::size_t cell = 0; cell < grid.cells(); ++cell) {
+    const double count = double(buckets.end(cell) - buckets.begin(cell));
+    crowding += count * count;
+  }
+  std::vector<Vec2> corner_points;
+  std::optional<detail::PointTree> tree;
+  if (crowding > kCrowdedCornerPairs * double(corners.size())) {
+    corner_points.reserve(corners.size());
+    for (const Corner& corner : corners) corner_points.push_back(corner.point);
+    tree.emplace(corner_points);
+  }
+  double largest = 0.0;
+  for (Vec2 p : corner_points) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
       const double limit = thickest_refused(glm::length(b - a));
-      std::optional<std::string> defect;
-      grid.for_each_cell(a, b, margin, [&](std::size_t cell) {
-        for (const std::size_t* c = buckets.begin(cell); c != buckets.end(cell) && !defect; ++c) {
-          const Corner& corner = corners[*c];
-          const std::size_t n = ring.size(), j = (i + 1) % n;
-          double wall = 0.0;
-          if (corner.ring == r) {
-            if (corner.index == i || corner.index == j) continue;
-            const SegmentProjection nearest = project_on_segment(corner.point, a, b);
-            // Nearest at the end it shares an edge with: that edge's length, not a wall.
-            if (nearest.along == 0.0 && corner.index == (i + n - 1) % n) continue;
-            if (nearest.along == 1.0 && corner.index == (j + 1) % n) continue;
-            wall = nearest.distance;
-            if (wall > limit) continue;
-            defect = ring_name(r) + " comes within " + number(wall) + " of itself at " +
-                     point(corner.point) + ", a spike or neck no wider than " + number(limit);
-            continue;
-          }
-          wall = point_segment_distance(corner.point, a, b);
-          if (wall > limit) continue;
-          // Named from a hole's side: it comes near the outer boundary or another hole.
-          const std::size_t hole = corner.ring == 0 ? r : corner.ring;
-          const std::size_t other = corner.ring == 0 ? 0 : r;
-          defect = ring_name(hole) + " comes within " + number(wall) + " of " + ring_name(other) +
-                   " at " + point(corner.point) + ", a wall no thicker than " + number(limit);
+      auto defect_at = [&](std::size_t c) -> std::optional<std::string> {
+        const Corner& corner = corners[c];
+        const std::size_t n = ring.size(), j = (i + 1) % n;
+        if (corner.ring == r) {
+          if (corner.index == i || corner.index == j) return std::nullopt;
+          const SegmentProjection nearest = project_on_segment(corner.point, a, b);
+          // Nearest at the end it shares an edge with: that edge's length, not a wall.
+          if (nearest.along == 0.0 && corner.index == (i + n - 1) % n) return std::nullopt;
+          if (nearest.along == 1.0 && corner.index == (j + 1) % n) return std::nullopt;
+          if (nearest.distance > limit) return std::nullopt;
+          return ring_name(r) + " comes within " + number(nearest.distance) + " of itself at " +
+                 point(corner.point) + ", a spike or neck no wider than " + number(limit);
         }
-      });
+        const double wall = point_segment_distance(corner.point, a, b);
+        if (wall > limit) return std::nullopt;
+        // Named from a hole's side: it comes near the outer boundary or another hole.
+        const std::size_t hole = corner.ring == 0 ? r : corner.ring;
+        const std::size_t other = corner.ring == 0 ? 0 : r;
+        return ring_name(hole) + " comes within " + number(wall) + " of " + ring_name(other) +
+               " at " + point(corner.point) + ", a wall no thicker than " + number(limit);
+      };
+      std::optional<std::string> defect;
+      if (!tree) {
+        grid.for_each_cell(a, b, margin, [&](std::size_t cell) {
+          for (const std::size_t* c = buckets.begin(cell); c != buckets.end(cell) && !defect; ++c) {
+            defect = defect_at(*c);
+          }
+        });
+      } else {
+        // The cells' order: by row, then column, then corner.
+        std::tuple<int, int, std::size_t> first{0, 0, 0};
+        tree->for_each_near(a, b, margin, 1e-9 * largest, [&](std::size_t c) {
+          const Vec2 p = corners[c].point;
+          const std::tuple<int, int, std::size_t> order{grid.row(p.y), grid.column(p.x), c};
+          if (defect && order >= first) return;
+          if (std::optional<std::string> found = defect_at(c))
+            defect = std::move(found), first = order;
+        });
+      }
       if (defect) return defect;
     }
   }
