@@ -258,15 +258,16 @@ TEST_F(CookCli, ReviewASidecarThatIsADirectoryIsBadInput) {
 }
 
 TEST_F(CookCli, ReviewANoisyAlphaChannelIsRefusedBeforeDecomposing) {
-  // Half the pixels opaque at random: over a thousand pin holes in one region, which took seconds
-  // and hundreds of MB (minutes and GB at 448 px) before the refusal.
+  // Half the pixels opaque at random: thousands of pin holes in one region, which took minutes
+  // and GB at this size before the refusal (11 s and 80 MB once the decomposition tree stopped
+  // keeping every component; at 256 px, now within the bound, 2 s).
   std::mt19937 random(2);
-  std::vector<std::uint8_t> pixels(256 * 256 * 4, 0);
+  std::vector<std::uint8_t> pixels(448 * 448 * 4, 0);
   for (std::size_t i = 3; i < pixels.size(); i += 4) pixels[i] = random() % 2 ? 255 : 0;
-  fs::path input = write("noise.png", make_png(256, 256, 6, pixels));
+  fs::path input = write("noise.png", make_png(448, 448, 6, pixels));
   expect_bad_input(input, "--min-hole-area");
   auto result = run_hullcook("cook " + input.string() + " -o " + (directory / "out.hcb").string() +
-                             " --min-hole-area 40 -q");
+                             " --min-hole-area 400 -q");
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
@@ -282,8 +283,8 @@ TEST_F(CookCli, ReviewADirectoryWithoutImagesIsBadInput) {
 }
 
 TEST_F(CookCli, ReviewAPolygonWithTooManyHolesIsRefusedByDecomposeToo) {
-  // 45 x 45 square holes: holes x vertices = 2025 x 8104, over the bound of 1e7.
-  constexpr int kSide = 45;
+  // 80 x 80 square holes: holes x vertices = 6400 x 25604, over the bound of 5e7.
+  constexpr int kSide = 80;
   std::string text = std::to_string(1 + kSide * kSide) + "\n4 out\n0 0\n" +
                      std::to_string(3 * kSide + 1) + " 0\n" + std::to_string(3 * kSide + 1) + " " +
                      std::to_string(3 * kSide + 1) + "\n0 " + std::to_string(3 * kSide + 1) +
@@ -301,9 +302,9 @@ TEST_F(CookCli, ReviewAPolygonWithTooManyHolesIsRefusedByDecomposeToo) {
   auto result = run_hullcook("decompose " + input.string() + " --tau 1 --json " +
                              (directory / "out.json").string());
   EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
-  EXPECT_NE(result.output.find("2025 holes"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("6400 holes"), std::string::npos) << result.output;
   EXPECT_FALSE(fs::exists(directory / "out.json"));
-  expect_bad_input(input, "2025 holes");
+  expect_bad_input(input, "6400 holes");
 }
 
 TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {

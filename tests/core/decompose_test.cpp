@@ -333,6 +333,49 @@ TEST(Decompose, TreeWithoutCoarserLevelsHoldsItsLeavesOnlyOnAComb) {
     }
     EXPECT_GT(kept.pieces_at(1000.0).size(), 0u);
     EXPECT_THROW(leaves.pieces_at(1000.0), std::logic_error);
+    // Keeping one coarser level: the root, here, and no copy of the comb per tooth.
+    settings.kept_levels = {1000.0};
+    const DecompositionTree root_kept = decompose(region, settings);
+    std::size_t root_kept_vertices = 0;
+    for (const auto& node : root_kept.nodes()) root_kept_vertices += node.component.outer.size();
+    EXPECT_LT(root_kept_vertices, 3 * n);
+    const std::vector<Piece> whole = root_kept.pieces_at(1000.0);
+    ASSERT_EQ(whole.size(), 1u);
+    EXPECT_EQ(whole[0].component.outer, region.outer);
+  }
+}
+
+// Trees that keep only the levels to be read give those levels' pieces exactly as a tree that
+// keeps every node, on models with holes and under every measure (H2's splits depend on τ).
+TEST(Decompose, KeptLevelsReadTheSamePiecesAsTheWholeTree) {
+  for (const char* file : {"nazca/nazca_monkey.poly", "neuron/neuron.poly", "misc/hole3.poly"}) {
+    const auto path = std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/polygons" / file;
+    const std::vector<Region> regions = clean_and_validate(read_poly_file(path.string()), file);
+    const double radius = enclosing_radius(regions);
+    for (Measure measure : kMeasures) {
+      SCOPED_TRACE(std::string(file) + " " + measure_name(measure));
+      DecomposeSettings settings{0.01 * radius, measure};
+      const std::vector<double> levels{0.03 * radius, 0.1 * radius, 0.3 * radius};
+      const DecompositionTree whole = decompose(regions[0], settings);
+      settings.keep_coarser_levels = false;
+      settings.kept_levels = levels;
+      const DecompositionTree kept = decompose(regions[0], settings);
+      std::size_t dropped = 0;
+      for (const auto& node : kept.nodes()) dropped += node.component.outer.empty();
+      for (double tau : {levels[0], levels[1], levels[2], settings.tau}) {
+        const std::vector<Piece> a = whole.pieces_at(tau), b = kept.pieces_at(tau);
+        ASSERT_EQ(a.size(), b.size()) << tau;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+          EXPECT_EQ(a[k].component.outer, b[k].component.outer);
+          EXPECT_EQ(a[k].component.holes, b[k].component.holes);
+          EXPECT_EQ(a[k].hull, b[k].hull);
+        }
+      }
+      // Some split node is a piece of no kept level (else nothing was saved).
+      if (measure == Measure::h1) {
+        EXPECT_GT(dropped, 0u);
+      }
+    }
   }
 }
 

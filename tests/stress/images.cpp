@@ -237,7 +237,7 @@ DrawnImage one_pixel_walls(Random& random, std::uint64_t seed) {
   }
   if (kind == 1) {  // diagonal 1 px lines both ways: a lattice of diamond holes
     // About 2 (side / spacing)^2 holes: at most 14 spacings a side keeps them near 400, within
-    // what cook() takes (holes x vertices at most 1e7).
+    // what cook() takes (holes x vertices at most 5e7).
     const int spacing = random.integer(4, 16);
     const int side = random.integer(24, std::max(24, std::min(160, 14 * spacing)));
     Canvas canvas(side + 2, side + 2);

@@ -50,7 +50,7 @@ int run_decompose(const DecomposeOptions& options) {
     refuse_sliver_regions({regions[r]}, options.input, r + 1);
   }
   const double tau = tolerance.resolve(enclosing_radius(regions));
-  const DecomposeSettings settings{tau, *measure, options.sc, options.sd, options.max_pieces > 0};
+  const DecomposeSettings settings{tau, *measure, options.sc, options.sd, false};
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Piece> pieces;
@@ -64,6 +64,17 @@ int run_decompose(const DecomposeOptions& options) {
       throw ContractError(options.input + ": internal error: " + e.what());
     }
     level_tau.push_back(options.max_pieces ? tree.tau_within(options.max_pieces) : tau);
+    // The budget's level is known only from the tree: it is built again (the same cuts) keeping
+    // that level's outlines, rather than keeping every node's.
+    if (level_tau.back() > tau) {
+      DecomposeSettings keeping = settings;
+      keeping.kept_levels = {level_tau.back()};
+      try {
+        tree = decompose(region, keeping);
+      } catch (const std::logic_error& e) {
+        throw ContractError(options.input + ": internal error: " + e.what());
+      }
+    }
     std::vector<Piece> part = tree.pieces_at(level_tau.back());
     first_piece.push_back(pieces.size());
     for (Piece& piece : part) pieces.push_back(std::move(piece));

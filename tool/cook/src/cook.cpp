@@ -499,7 +499,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   decompose_settings.measure = *parse_measure(settings.measure);
   decompose_settings.sc = settings.sc;
   decompose_settings.sd = settings.sd;
-  decompose_settings.keep_coarser_levels = level_taus.size() > 1 || settings.max_pieces > 0;
+  // The trees keep the outlines of the levels read, not of every node they split (see
+  // DecomposeSettings::keep_coarser_levels).
+  decompose_settings.keep_coarser_levels = false;
+  decompose_settings.kept_levels.assign(level_taus.begin() + 1, level_taus.end());
   auto decompose_start = Clock::now();
   std::optional<AssetDecomposer> decomposer(std::in_place, regions, decompose_settings, threads);
   if (settings.max_pieces > 0) {
@@ -509,6 +512,11 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
       if (level_taus.empty() || level_taus.front() != budget_tau) {
         level_taus.insert(level_taus.begin(), budget_tau);
       }
+      // The budget's level is known only from the trees: they are built again (the same cuts)
+      // keeping it, which costs a second decomposition where keeping every level cost memory
+      // quadratic in the outline (a comb) or in the holes.
+      decompose_settings.kept_levels = level_taus;
+      decomposer.emplace(regions, decompose_settings, threads);
     }
   }
   asset.tau = level_taus.front();
@@ -527,7 +535,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   auto split = [&](const Region& component, double tau) {
     DecomposeSettings finer = decompose_settings;
     finer.tau = tau;
-    finer.keep_coarser_levels = false;
+    finer.kept_levels.clear();
     return to_cooked(decompose(component, finer).pieces_at(tau));
   };
   // Every level is checked before the asset is returned, so that a broken one stops the cook
@@ -611,13 +619,14 @@ void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
 
 }  // namespace
 
-// Holes are resolved one at a time, each on the component holding the rest: time and memory grow
-// with the holes times the vertices (each resolution measures that component again, and the tree
-// keeps every component). A noisy alpha channel traces to thousands of pin holes and would take
-// minutes and gigabytes (a 448 px square of 50 % noise: 233 s, 1.6 GB; at the bound, 1e7, noise
-// took up to about 3 s), so such a region is refused before it is decomposed, saying what to
-// change.
-constexpr double kMaxHolesTimesVertices = 1e7;
+// Holes are resolved one at a time, each on the component holding the rest: time grows with the
+// holes times the vertices (each resolution measures that component again). A noisy alpha channel
+// traces to thousands of pin holes (a 448 px square of 50 % noise, 3,613 holes among 82,425
+// vertices: 233 s and 1.6 GB when the tree kept every component, 11 s and 80 MB since), so such a
+// region is refused before it is decomposed, saying what to change. Near the bound, noise takes
+// about 3 s (2,067 holes among 27,896 vertices: 3.5 s, 30 MB), and a 256 px grate of 3 px holes
+// (1,681 among 14,118) 0.28 s; the bound was 1e7 while the tree kept every component.
+constexpr double kMaxHolesTimesVertices = 5e7;
 
 void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
                            bool traced) {
@@ -630,7 +639,7 @@ void refuse_too_many_holes(const std::vector<Region>& regions, const std::string
     }
     throw InputError(source + ": region " + std::to_string(r + 1) + " has " +
                      std::to_string(holes) + " holes among " + std::to_string(vertices) +
-                     " vertices, too many to decompose (holes x vertices must be at most 1e7)" +
+                     " vertices, too many to decompose (holes x vertices must be at most 5e7)" +
                      (traced ? "; is the alpha channel noisy? Raise --min-hole-area (smaller "
                                "holes are filled) or --alpha"
                              : ""));

@@ -78,7 +78,6 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   DecompositionTree tree;
   tree.tau_ = settings.tau;
   tree.measure_ = settings.measure;
-  tree.keep_coarser_levels_ = settings.keep_coarser_levels;
   tree.nodes_.push_back({region, 0.0, {}, {-1, -1}});
   std::vector<int> pending{0};
   // Under every measure but H2 a child inherits the values of the pockets it keeps whole, and
@@ -86,7 +85,15 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
   PocketCache cache;
   PocketCache* const pocket_cache = inherits_values(settings) ? nullptr : &cache;
   std::vector<ParentHint> hints(1);  // per node
-  Evaluation e;                      // of the node at hand; its storage is reused
+  // Per node, the least concavity of its ancestors: a node is a piece at τ when that is above τ
+  // (the root has no ancestor) and the node's own concavity is not.
+  std::vector<double> ancestors_least{std::numeric_limits<double>::infinity()};
+  auto is_piece_of_a_kept_level = [&](int id, double concavity) {
+    const double least = ancestors_least[std::size_t(id)];
+    return std::any_of(settings.kept_levels.begin(), settings.kept_levels.end(),
+                       [&](double tau) { return concavity <= tau && (id == 0 || tau < least); });
+  };
+  Evaluation e;  // of the node at hand; its storage is reused
   std::vector<ParentHint> spare_hints;
   auto take_spare_hint = [&] {
     if (spare_hints.empty()) return ParentHint();
@@ -144,7 +151,11 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     hints.push_back(std::move(child_hints.first));
     hints.push_back(std::move(child_hints.second));
     auto& node = tree.nodes_[std::size_t(id)];
-    if (!settings.keep_coarser_levels) node.component = Region();
+    ancestors_least.insert(ancestors_least.end(), 2,
+                           std::min(ancestors_least[std::size_t(id)], node.concavity));
+    if (!settings.keep_coarser_levels && !is_piece_of_a_kept_level(id, node.concavity)) {
+      node.component = Region();
+    }
     node.witness = witness;
     node.children[0] = first;
     node.children[1] = first + 1;
@@ -178,7 +189,7 @@ void DecompositionTree::for_each_piece_at(double tau, Take take) const {
     stack.pop_back();
     const Node& node = nodes_[std::size_t(id)];
     if (node.is_leaf() || node.concavity <= tau) {
-      if (!node.is_leaf() && !keep_coarser_levels_) {
+      if (!node.is_leaf() && node.component.outer.empty()) {
         throw std::logic_error("pieces_at: a coarser level than the tree was built to keep");
       }
       take(std::size_t(id));

@@ -119,7 +119,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
 void check_output_path(const std::filesystem::path& path);
 
 // Throws InputError naming source and the region if a region has too many holes for its
-// vertices to decompose in reasonable time and memory (holes x vertices above 1e7; see cook.cpp),
+// vertices to decompose in reasonable time and memory (holes x vertices above 5e7; see cook.cpp),
 // with a hint about the alpha channel when traced.
 void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
                            bool traced);

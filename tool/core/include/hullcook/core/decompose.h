@@ -30,8 +30,12 @@ struct DecomposeSettings {
   // Whether the tree keeps the component of every node it splits, which pieces_at() returns at a
   // τ above tau (levels of detail, piece budgets). Without them the tree holds its leaves and
   // what is being cut, not every depth's copy of the outline: a comb whose cuts peel one tooth at
-  // a time kept memory quadratic in its length (16,000 vertices: 0.5 GB; 32,000: 2 GB).
+  // a time kept memory quadratic in its length (16,000 vertices: 0.5 GB; 32,000: 2 GB), and a
+  // region of many holes one copy per hole resolved.
   bool keep_coarser_levels = true;
+  // Without keep_coarser_levels: the τ values above tau whose pieces the tree keeps all the same,
+  // so that pieces_at() can read them (the split nodes that are pieces of none are dropped).
+  std::vector<double> kept_levels{};
 };
 
 // One piece of a decomposition.
@@ -63,8 +67,8 @@ class DecompositionTree {
   // The decomposition for any τ' >= built_tau(): leaves of the tree cut where concavity <= τ'.
   // For SL, SP and H1 this equals a fresh decompose() at τ'. For H2 (whose witness depends on τ)
   // every piece still has concavity <= τ'. Pieces come in depth-first order of the tree. A tree
-  // built without keep_coarser_levels has only the leaves' components: a τ' at which a split node
-  // would be a piece throws std::logic_error.
+  // built without keep_coarser_levels has the leaves' components and those of the kept_levels'
+  // pieces: a τ' at which a dropped node would be a piece throws std::logic_error.
   std::vector<Piece> pieces_at(double tau) const&;
   // The same, moving the pieces' components out of a tree that is not used again (copying them
   // was a tenth of a cook's allocations).
@@ -86,9 +90,8 @@ class DecompositionTree {
 
   double built_tau() const { return tau_; }
   Measure measure() const { return measure_; }
-  // nodes()[0] is the root. Without keep_coarser_levels, a split node's component is empty.
+  // nodes()[0] is the root. Without keep_coarser_levels, a dropped node's component is empty.
   const std::vector<Node>& nodes() const { return nodes_; }
-  bool keeps_coarser_levels() const { return keep_coarser_levels_; }
 
  private:
   friend DecompositionTree decompose(const Region&, const DecomposeSettings&);
@@ -98,7 +101,6 @@ class DecompositionTree {
   std::vector<Node> nodes_;
   double tau_ = 0.0;
   Measure measure_ = Measure::h1;
-  bool keep_coarser_levels_ = true;
 };
 
 // Decomposes one cleaned region (see clean_and_validate) until every piece has concavity <= tau,
