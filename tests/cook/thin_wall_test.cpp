@@ -323,9 +323,9 @@ TEST(Issue19Fuzz, SpikesAreRefusedUpToTheRefusalWidthAndCutWithinContractBeyond)
 }
 
 // A star of long spikes from a small core: every spike's edges pass by the core's corners, which
-// share a few grid cells, so the grid's cells tested every edge against all of them (a star of 40,000
-// vertices: 800 million tests); a k-d tree finds each edge's near corners instead. The valid star
-// is accepted, and a hole a hair from a spike's edge is named.
+// share a few grid cells, so the grid's cells tested every edge against all of them (a star of
+// 40,000 vertices: 800 million tests); a k-d tree finds each edge's near corners instead. The valid
+// star is accepted, and a hole a hair from a spike's edge is named.
 TEST(ThinWalls, CrowdedCornersOfALongStarAreCheckedNearEachEdge) {
   const int spikes = 20000;
   Ring star;
@@ -351,6 +351,36 @@ TEST(ThinWalls, CrowdedCornersOfALongStarAreCheckedNearEachEdge) {
     EXPECT_NE(std::string(error.what()).find("hole 1 comes within 1e-07 of the outer boundary"),
               std::string::npos)
         << error.what();
+  }
+}
+
+// A region refused only because it is far from the origin (the contract's slack is a billionth
+// of a thousandth of the largest coordinate there) says so: the same rectangle near the origin
+// passes.
+TEST(ThinWalls, ARegionTooThinOnlyFarFromTheOriginSaysToMoveIt) {
+  auto rectangle = [](Vec2 at) {
+    return Region{{at, at + Vec2{1e-3, 0}, at + Vec2{1e-3, 1e-4}, at + Vec2{0, 1e-4}}, {}};
+  };
+  EXPECT_NO_THROW(refuse_sliver_regions({rectangle({0, 0})}, "near.poly"));
+  EXPECT_NO_THROW(refuse_sliver_regions({rectangle({1e3, 1e3})}, "near.poly"));
+  try {
+    refuse_sliver_regions({rectangle({1e9, 1e9})}, "far.poly");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_TRUE(what.starts_with("far.poly: region 1 is too thin to cut")) << what;
+    EXPECT_NE(what.find("; its coordinates reach 1e+09, where the contract's slack for rounding is "
+                        "0.001: move it nearer the origin"),
+              std::string::npos)
+        << what;
+  }
+  // A region thin at any distance gets no such advice.
+  const Region hair{{{0, 0}, {1, 0}, {1, 1e-10}, {0, 1e-10}}, {}};
+  try {
+    refuse_sliver_regions({hair}, "hair.poly");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).find("origin"), std::string::npos) << error.what();
   }
 }
 
