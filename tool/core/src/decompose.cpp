@@ -151,8 +151,8 @@ DecompositionTree decompose(const Region& region, const DecomposeSettings& setti
     hints.push_back(std::move(child_hints.first));
     hints.push_back(std::move(child_hints.second));
     auto& node = tree.nodes_[std::size_t(id)];
-    ancestors_least.insert(ancestors_least.end(), 2,
-                           std::min(ancestors_least[std::size_t(id)], node.concavity));
+    const double least = std::min(ancestors_least[std::size_t(id)], node.concavity);
+    ancestors_least.insert(ancestors_least.end(), 2, least);
     if (!settings.keep_coarser_levels && !is_piece_of_a_kept_level(id, node.concavity)) {
       node.component = Region();
     }
