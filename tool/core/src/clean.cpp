@@ -101,6 +101,7 @@ class EdgeGrid {
       entries += std::abs(x_.cell_coordinate(e.b.x) - x_.cell_coordinate(e.a.x)) +
                  std::abs(y_.cell_coordinate(e.b.y) - y_.cell_coordinate(e.a.y)) + 1.0;
     }
+    entries_ = entries;
     dense_ = entries > kEntriesPerEdge * double(edges.size());
     if (!dense_) build(edges);
   }
@@ -146,6 +147,8 @@ class EdgeGrid {
 
   // Whether its edges are too long for a grid to pay (and it was not built, yet).
   bool dense() const { return dense_; }
+  // About how many entries its cells hold (or would, built).
+  double entries() const { return entries_; }
 
   // The pairs of edges that share a cell, counted once per cell they share.
   double pairs_sharing_cells() const {
@@ -186,15 +189,21 @@ class EdgeGrid {
 
   int side_ = 1;
   bool dense_ = false;
+  double entries_ = 0.0;
   Axis x_, y_;
   Buckets<std::size_t> cells_;  // the edges entered in each cell
 };
 
 // Beyond this many pairs per edge sharing grid cells, the sweep is faster than the grid.
 constexpr double kGridPairsPerEdge = 128.0;
+// Naming the first of the crossings the sweep found costs the grid's time: within these many
+// entries and pair tests per edge (and a million more tests), else the sweep's crossing is named.
+constexpr double kNamingEntriesPerEdge = 128.0;
+constexpr double kNamingPairsPerEdge = 256.0;
 
 // The first crossing in (ring, index) order: the first edge that meets a non-adjacent edge, and
-// the first edge it meets. Each pair that shares a cell is tested once.
+// the first edge it meets. Each pair that shares a cell is tested once. (Where the edges are so
+// long and crowded that finding the first would take seconds, the sweep's crossing instead.)
 std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
                                       const std::vector<std::size_t>& ring_sizes) {
   auto boxes_apart = [](const Edge& e, const Edge& f) {
@@ -220,10 +229,17 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
   // Long edges side by side (a star's spikes, a comb's teeth) share cells by the thousand, and
   // testing every pair that shares one is quadratic: then the sweep decides, in O(n log n), and
   // the grid is built to name the first crossing only when there is one.
-  if (grid.dense() || grid.pairs_sharing_cells() > kGridPairsPerEdge * double(edges.size())) {
-    if (!detail::find_crossing_by_sweep(edges, ring_sizes)) return std::nullopt;
+  const double n = double(edges.size());
+  std::optional<Crossing> swept;
+  if (grid.dense() || grid.pairs_sharing_cells() > kGridPairsPerEdge * n) {
+    const auto pair = detail::find_crossing_by_sweep(edges, ring_sizes);
+    if (!pair) return std::nullopt;
+    swept = Crossing{&edges[pair->first], &edges[pair->second]};
+    if (grid.entries() > kNamingEntriesPerEdge * n) return swept;
   }
   if (grid.dense()) grid.build(edges);
+  // Pair tests left before the sweep's crossing is named instead of the first.
+  double tests_left = kNamingPairsPerEdge * n + double(1 << 20);
   // tested_with[j] == i: the pair (i, j) was tested in an earlier cell of edge i.
   std::vector<std::size_t> tested_with(edges.size(), edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -236,14 +252,16 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
         const std::size_t j = *k;
         if (tested_with[j] == i) continue;
         tested_with[j] = i;
+        tests_left -= 1.0;
         const Edge& f = edges[j];
         if (boxes_apart(e, f) || adjacent(e, f, ring_sizes)) continue;
         if (segments_intersect(e.a, e.b, f.a, f.b)) second = j;
       }
     });
     if (second < edges.size()) return Crossing{&e, &edges[second]};
+    if (swept && tests_left < 0.0) return swept;
   }
-  return std::nullopt;
+  return swept;
 }
 
 struct Box {
