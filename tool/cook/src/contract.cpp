@@ -35,12 +35,32 @@ std::string number(double value) {
 
 std::string point(Vec2 p) { return "(" + number(p.x) + ", " + number(p.y) + ")"; }
 
-// The rounding slack of every length compared (see contract.h).
-double rounding_slack(const std::vector<Region>& outline) {
+CoordinateReach coordinate_reach(const std::vector<const Ring*>& rings) {
+  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
+  CoordinateReach reach;
+  for (const Ring* ring : rings) {
+    for (Vec2 p : *ring) {
+      low = glm::min(low, p), high = glm::max(high, p);
+      reach.largest = std::max({reach.largest, std::abs(p.x), std::abs(p.y)});
+    }
+  }
+  if (low.x <= high.x) reach.extent = std::max(high.x - low.x, high.y - low.y);
+  return reach;
+}
+
+CoordinateReach coordinate_reach(const std::vector<Region>& outline) {
   std::vector<const Ring*> rings;
   rings.reserve(outline.size());
   for (const Region& region : outline) rings.push_back(&region.outer);
-  return contract_slack(rings);
+  return coordinate_reach(rings);
+}
+
+double slack_for(CoordinateReach reach) {
+  return 1e-9 * std::max(reach.extent, 1e-3 * reach.largest);
+}
+
+double rounding_slack(const std::vector<Region>& outline) {
+  return slack_for(coordinate_reach(outline));
 }
 
 // The diagonal of the ring's bounding box: a piece's length, to the sliver test.
@@ -761,16 +781,7 @@ void enforce_contract(const std::string& source, const std::vector<std::string>&
 }
 
 double contract_slack(const std::vector<const Ring*>& rings) {
-  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
-  double largest = 0.0;
-  for (const Ring* ring : rings) {
-    for (Vec2 p : *ring) {
-      low = glm::min(low, p), high = glm::max(high, p);
-      largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-    }
-  }
-  const double extent = std::max(high.x - low.x, high.y - low.y);
-  return 1e-9 * std::max(extent, 1e-3 * largest);
+  return detail::slack_for(detail::coordinate_reach(rings));
 }
 
 bool is_contract_sliver(const Region& region, double slack) {

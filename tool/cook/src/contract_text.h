@@ -14,7 +14,17 @@ namespace hullcook::detail {
 std::string number(double value);  // "%.6g"
 std::string point(Vec2 p);         // "(x, y)"
 
-// The rounding slack of every length compared (see contract_slack in contract.h).
+// What the rounding slack of an outline's outer rings is made of (see contract_slack in
+// contract.h): the larger side of their bounding box and their largest coordinate.
+struct CoordinateReach {
+  double extent = 0.0;
+  double largest = 0.0;
+};
+CoordinateReach coordinate_reach(const std::vector<const Ring*>& rings);
+CoordinateReach coordinate_reach(const std::vector<Region>& outline);
+double slack_for(CoordinateReach reach);
+
+// The rounding slack of every length compared: slack_for(coordinate_reach(outline)).
 double rounding_slack(const std::vector<Region>& outline);
 
 // The diagonal of the ring's bounding box: a piece's length, to the sliver test.

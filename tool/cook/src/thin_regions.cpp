@@ -147,17 +147,9 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
 // When the slack comes from the coordinates' distance from the origin (a thousandth of the
 // largest) rather than from the outline's size, a region refused as too thin is one that moving
 // nearer the origin would let through: the message says so (a Koch curve 1e-3 across at 1e9).
-std::string far_from_origin_hint(const std::vector<Region>& outline, double slack) {
-  Vec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
-  double largest = 0.0;
-  for (const Region& region : outline) {
-    for (Vec2 p : region.outer) {
-      low = glm::min(low, p), high = glm::max(high, p);
-      largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-    }
-  }
-  if (!(slack > 1e-9 * std::max(high.x - low.x, high.y - low.y))) return "";
-  return "; its coordinates reach " + number(largest) +
+std::string far_from_origin_hint(detail::CoordinateReach reach, double slack) {
+  if (!(slack > 1e-9 * reach.extent)) return "";
+  return "; its coordinates reach " + number(reach.largest) +
          ", where the contract's slack for rounding is " + number(slack) +
          ": move it nearer the origin";
 }
@@ -167,7 +159,8 @@ std::string far_from_origin_hint(const std::vector<Region>& outline, double slac
 void refuse_sliver_regions(const std::vector<Region>& outline, const std::string& source,
                            std::size_t first_region_number, unsigned threads) {
   if (outline.empty()) return;
-  const double slack = detail::rounding_slack(outline);
+  const detail::CoordinateReach reach = detail::coordinate_reach(outline);
+  const double slack = detail::slack_for(reach);
   // Each region on its own; the first error by region is the one thrown, whatever the threads.
   parallel_for(
       outline.size(), threads,
@@ -177,7 +170,7 @@ void refuse_sliver_regions(const std::vector<Region>& outline, const std::string
         if (defect) {
           throw InputError(source + ": region " + std::to_string(first_region_number + r) +
                            " is too thin to cut into pieces within the output's contract (" +
-                           *defect + ")" + far_from_origin_hint(outline, slack));
+                           *defect + ")" + far_from_origin_hint(reach, slack));
         }
       },
       kRegionsWorthAThread);

@@ -73,10 +73,6 @@ struct Crossing {
   const Edge* second;
 };
 
-bool adjacent(const Edge& e, const Edge& f, const std::vector<std::size_t>& ring_sizes) {
-  return detail::consecutive(e, f, ring_sizes);
-}
-
 // A uniform grid over the edges in which each edge is entered in the cells its segment passes
 // through: entered in every cell of its box, the edges of a zigzag of long diagonal teeth nearly
 // all shared every cell, and validation was cubic.
@@ -219,7 +215,7 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
       for (std::size_t j = i + 1; j < edges.size(); ++j) {
         const Edge& e = edges[i];
         const Edge& f = edges[j];
-        if (boxes_apart(e, f) || adjacent(e, f, ring_sizes)) continue;
+        if (boxes_apart(e, f) || detail::consecutive(e, f, ring_sizes)) continue;
         if (segments_intersect(e.a, e.b, f.a, f.b)) return Crossing{&e, &f};
       }
     }
@@ -254,7 +250,7 @@ std::optional<Crossing> find_crossing(const std::vector<Edge>& edges,
         tested_with[j] = i;
         tests_left -= 1.0;
         const Edge& f = edges[j];
-        if (boxes_apart(e, f) || adjacent(e, f, ring_sizes)) continue;
+        if (boxes_apart(e, f) || detail::consecutive(e, f, ring_sizes)) continue;
         if (segments_intersect(e.a, e.b, f.a, f.b)) second = j;
       }
     });
