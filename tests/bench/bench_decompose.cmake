@@ -10,7 +10,9 @@ if(CGAL_FOUND)
   target_link_libraries(bench_decompose PRIVATE CGAL::CGAL)
   target_compile_definitions(bench_decompose PRIVATE HULLCOOK_BENCH_CGAL=1)
 endif()
-# Its tables beyond Google Benchmark's: the authors' code (table A), the first run (table D).
+# Its tables beyond Google Benchmark's: the authors' code (table A), the first run (table D);
+# its figures' plots.
 target_sources(bench_decompose PRIVATE
   ${CMAKE_CURRENT_SOURCE_DIR}/paper_models.cpp ${CMAKE_CURRENT_SOURCE_DIR}/authors_comparison.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/first_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/child_process.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/first_run.cpp ${CMAKE_CURRENT_SOURCE_DIR}/child_process.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/svg_plot.cpp)
