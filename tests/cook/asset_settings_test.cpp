@@ -4,6 +4,8 @@
 // both files are dependencies of the output.
 #include "asset_settings.h"  // tool/cook/src
 
+#include "../cli/png_writer.h"
+
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/error.h"
 
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace hullcook {
 namespace {
@@ -155,6 +158,72 @@ TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
   expect_refused(sidecar, R"({"physics": {"density": -1}})", "'density'");
   expect_refused(sidecar, R"({"simplify": 1})", "unknown setting 'simplify'");
   write(sidecar, R"({"lods": ["2%"]})");
+  EXPECT_THROW(cook({root / "art"}, settings), InputError);
+}
+
+// A folder of sprites with alpha and of opaque RGB tiles (keyed with magenta) cooks in one command
+// when a rule gives the tiles their colour key; before, the first tile stopped the cook, and only
+// --color-key for every image could let it through.
+TEST_F(ProjectSettings, AColourKeyPerAssetLetsAMixedFolderCook) {
+  // A 24x16 RGB tile: magenta but for a 12x8 block of brown in its lower left.
+  constexpr std::uint32_t kWidth = 24, kHeight = 16;
+  std::vector<std::uint8_t> rgb;
+  for (std::uint32_t y = 0; y < kHeight; ++y) {
+    for (std::uint32_t x = 0; x < kWidth; ++x) {
+      const bool solid = x < 12 && y >= 8;
+      rgb.insert(rgb.end(), {std::uint8_t(solid ? 120 : 255), std::uint8_t(solid ? 80 : 0),
+                             std::uint8_t(solid ? 40 : 255)});
+    }
+  }
+  std::ofstream(root / "art/tiles/dirt.png", std::ios::binary)
+      << test::make_png(kWidth, kHeight, 2, rgb);
+  Settings settings;
+  settings.threads = 1;
+  try {
+    cook({root / "art"}, settings);
+    ADD_FAILURE() << "an opaque image without a colour key was cooked";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dirt.png"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"color_key\""), std::string::npos) << e.what();
+  }
+
+  write(root / "art/hullcook.json",
+        R"({"assets": [{"match": "tiles/*.png", "tau": 8, "max_verts": 4},
+                       {"match": "tiles/dirt.png", "color_key": "#FF00ff"},
+                       {"match": "**/hero.png", "physics": {"density": 3}}]})");
+  const CookResult folder = cook({root / "art"}, settings);
+  ASSERT_EQ(folder.assets.size(), 4u);
+  Settings keyed = settings;
+  keyed.tau = Tolerance{8.0, false};
+  keyed.max_verts = 4;
+  keyed.color_key = std::array<std::uint8_t, 3>{255, 0, 255};
+  const CookedAsset& dirt = named(folder, "tiles/dirt.png");
+  expect_same_levels(dirt, cook({root / "art/tiles/dirt.png"}, keyed).assets.at(0));
+  // The block, not the whole image: its hull spans 12 x 8 px (within tau), not 24 x 16.
+  ASSERT_EQ(dirt.levels.at(0).hulls.size(), 1u);
+  double area = 0.0;
+  const Ring& hull = dirt.levels[0].hulls[0];
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+    area += 0.5 * (a.x * b.y - a.y * b.x);
+  }
+  EXPECT_NEAR(std::abs(area), 12.0 * 8.0, 12.0);
+  // The sprites with alpha are as before: the key applies to the tile alone.
+  expect_same_levels(named(folder, "hero.png"),
+                     cook({root / "art/hero.png"}, settings).assets.at(0));
+
+  // A sidecar's null takes back the key its project rule (or the command line) gave.
+  write(root / "art/tiles/dirt.hullcook.json", R"({"color_key": null})");
+  for (const bool on_the_command_line : {false, true}) {
+    Settings given = settings;
+    if (on_the_command_line) given.color_key = std::array<std::uint8_t, 3>{255, 0, 255};
+    EXPECT_THROW(cook({root / "art"}, given), InputError);
+  }
+  fs::remove(root / "art/tiles/dirt.hullcook.json");
+
+  write(root / "art/hero.hullcook.json", R"({"color_key": "#ff00f"})");
+  EXPECT_THROW(cook({root / "art"}, settings), InputError);
+  write(root / "art/hero.hullcook.json", R"({"color_key": 16711935})");
   EXPECT_THROW(cook({root / "art"}, settings), InputError);
 }
 

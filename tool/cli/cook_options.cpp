@@ -27,16 +27,6 @@ double parse_number(const std::string& text, const char* option) {
   return value;
 }
 
-std::array<std::uint8_t, 3> parse_color(const std::string& text) {
-  std::string hex = text;
-  if (!hex.empty() && hex[0] == '#') hex.erase(0, 1);
-  bool ok = hex.size() == 6 && hex.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
-  if (!ok) throw UsageError("--color-key: '" + text + "' is not a colour like #ff00ff");
-  unsigned long rgb = std::strtoul(hex.c_str(), nullptr, 16);
-  return {static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
-          static_cast<std::uint8_t>(rgb)};
-}
-
 }  // namespace
 
 CLI::Validator number_in(double low, double high, const std::string& what) {
@@ -201,7 +191,13 @@ void finish_cook_options(const CLI::App& command, Settings& settings, const Cook
       settings.lods.push_back(tolerance);
     }
   }
-  if (!options.color_key.empty()) settings.color_key = parse_color(options.color_key);
+  if (!options.color_key.empty()) {
+    try {
+      settings.color_key = parse_color(options.color_key);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string("--color-key: ") + e.what());
+    }
+  }
   std::vector<std::string> pivot = split(options.pivot, ',');
   if (pivot.size() != 2) throw UsageError("--pivot: expected u,v such as 0.5,0.5");
   settings.pivot_u = parse_number(pivot[0], "--pivot");

@@ -151,13 +151,27 @@ Settings with_overrides(Settings settings, const json& object, const std::string
         throw InputError(file + ": 'measure' must be one of \"sl\", \"sp\", \"h1\", \"h2\"");
       }
       settings.measure = value.get<std::string>();
+    } else if (key == "color_key") {
+      // null undoes the command line's --color-key for these images.
+      if (value.is_null()) {
+        settings.color_key.reset();
+        continue;
+      }
+      if (!value.is_string()) {
+        throw InputError(file + ": 'color_key' must be a colour like \"#ff00ff\", or null");
+      }
+      try {
+        settings.color_key = parse_color(value.get<std::string>());
+      } catch (const UsageError& e) {
+        throw InputError(file + ": 'color_key': " + e.what());
+      }
     } else if (key == "physics") {
       PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
       apply_physics_json(physics, value, file);
       settings.physics = physics;
     } else {
       throw InputError(file + ": unknown setting '" + key +
-                       "' (tau, lods, alpha, max_verts, measure, physics)");
+                       "' (tau, lods, alpha, color_key, max_verts, measure, physics)");
     }
   }
   return settings;

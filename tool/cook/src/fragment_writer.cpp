@@ -135,14 +135,7 @@ std::string settings_text(const Settings& settings) {
     lods += (lods.empty() ? "" : ",") + tolerance_text(lod);
   line("lods", lods);
   line("alpha", std::to_string(settings.alpha));
-  std::string key = "none";
-  if (settings.color_key) {
-    char hex[8];
-    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", (*settings.color_key)[0],
-                  (*settings.color_key)[1], (*settings.color_key)[2]);
-    key = hex;
-  }
-  line("color_key", key);
+  line("color_key", settings.color_key ? color_text(*settings.color_key) : "none");
   line("min_blob_area", exact(settings.min_blob_area));
   line("min_hole_area", exact(settings.min_hole_area));
   line("simplify", settings.simplify ? exact(*settings.simplify) : "default");

@@ -3,6 +3,7 @@
 #include "hullcook/cook/preview.h"
 
 #include "canvas.h"
+#include "hullcook/cook/cook.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
@@ -15,7 +16,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -68,12 +68,6 @@ Colour piece_colour(std::size_t index, double shade = 1.0) {
 
 const Colour kOutlineColour{225, 30, 30};     // red
 const Colour kComponentColour{235, 200, 20};  // yellow
-
-std::string hex(const Colour& rgb) {
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
-  return text;
-}
 
 class Preview {
  public:
@@ -150,16 +144,16 @@ class Preview {
     }
     out << "<g class=\"hulls\" fill-opacity=\"0.35\" stroke-width=\"2\">\n";
     for (std::size_t i = 0; i < asset_.pieces.size(); ++i) {
-      std::string colour = hex(piece_colour(i));
+      std::string colour = color_text(piece_colour(i));
       out << "<path fill=\"" << colour << "\" stroke=\"" << colour << "\" d=\""
           << path({asset_.pieces[i].hull}) << "\"/>\n";
     }
-    out << "</g>\n<g class=\"components\" fill=\"none\" stroke=\"" << hex(kComponentColour)
+    out << "</g>\n<g class=\"components\" fill=\"none\" stroke=\"" << color_text(kComponentColour)
         << "\" stroke-width=\"1\">\n";
     for (const CookedPiece& piece : asset_.pieces) {
       out << "<path d=\"" << path(rings_of(piece.component)) << "\"/>\n";
     }
-    out << "</g>\n<g class=\"outline\" fill=\"none\" stroke=\"" << hex(kOutlineColour)
+    out << "</g>\n<g class=\"outline\" fill=\"none\" stroke=\"" << color_text(kOutlineColour)
         << "\" stroke-width=\"2\">\n";
     for (const Region& region : asset_.regions)
       out << "<path d=\"" << path(rings_of(region)) << "\"/>\n";

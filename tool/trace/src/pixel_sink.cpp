@@ -14,8 +14,8 @@ void fail(const std::string& name, const std::string& problem) {
 void PixelSink::start(int width, int height, Layout layout) {
   if (keep_ == Keep::alpha && !layout.has_alpha && !colour_key_) {
     fail(name_,
-         "the image has no alpha channel; give a colour key (--color-key #RRGGBB) to trace "
-         "it");
+         "the image has no alpha channel; give a colour key to trace it (--color-key #RRGGBB, "
+         "or \"color_key\" in a hullcook.json rule or sidecar for it)");
   }
   width_ = width;
   height_ = height;

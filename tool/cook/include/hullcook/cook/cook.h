@@ -43,6 +43,12 @@ struct Grid {
   static Grid parse(const std::string& text);
 };
 
+// An RGB colour "#ff00ff" (or "ff00ff"), as --color-key and a project rule's "color_key" give
+// one. Throws UsageError on anything else.
+std::array<std::uint8_t, 3> parse_color(const std::string& text);
+// The colour as "#rrggbb".
+std::string color_text(const std::array<std::uint8_t, 3>& rgb);
+
 struct Settings {
   // Decomposition (issue 3).
   Tolerance tau{2.0, false};    // [input units] or relative to R
