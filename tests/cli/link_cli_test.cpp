@@ -93,6 +93,33 @@ TEST_F(LinkCli, CookThenLinkWritesTheBytesOfOneCook) {
       << single.output;
 }
 
+// A skipped image (a project rule's "skip") cooked alone gives a fragment without assets, so
+// that a fragment build of every image links the folder's bytes.
+TEST_F(LinkCli, ASkippedImageLinksToNothing) {
+  const fs::path sprites = directory / "sprites";
+  const std::vector<std::string> names = make_sprite_folder(sprites);
+  write_bytes(sprites / "hullcook.json", R"({"assets": [{"match": "level/**", "skip": true}]})");
+  auto one = run_hullcook("cook " + sprites.string() + " -o " + (directory / "one.hcb").string() +
+                          " " + kOptions);
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  std::string fragments;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const fs::path fragment = directory / ("f" + std::to_string(i) + ".hcf");
+    cook_fragment(sprites / names[i], fragment, std::string(kOptions) + " --name " + names[i]);
+    fragments += " " + fragment.string();
+  }
+  auto linked = run_hullcook("link" + fragments + " -o " + (directory / "linked.hcb").string());
+  ASSERT_EQ(linked.exit_code, 0) << linked.output;
+  EXPECT_NE(linked.output.find("linked 2 assets from 4 fragments"), std::string::npos)
+      << linked.output;
+  EXPECT_EQ(read_bytes(directory / "linked.hcb"), read_bytes(directory / "one.hcb"));
+  // Cooked alone to a bundle, it says why the bundle is empty.
+  auto alone = run_hullcook("cook " + (sprites / "level/grid.png").string() + " -q -o " +
+                            (directory / "grid.hcb").string());
+  EXPECT_EQ(alone.exit_code, 0) << alone.output;
+  EXPECT_NE(alone.output.find("every input is skipped"), std::string::npos) << alone.output;
+}
+
 // What remote execution needs: the same input cooked in two places, one named by an absolute
 // path and one by a relative path from another working directory, gives the same fragment.
 TEST_F(LinkCli, AFragmentDoesNotDependOnWhereItsInputWas) {

@@ -66,6 +66,14 @@ class ProjectSettings : public ::testing::Test {
     throw std::runtime_error("no asset " + name);
   }
 
+  // Whether the cook lists path among the files it read (its dependencies).
+  static bool reads(const CookResult& result, const fs::path& path) {
+    for (const fs::path& file : files_read(result)) {
+      if (fs::equivalent(file, path)) return true;
+    }
+    return false;
+  }
+
   static void expect_same_levels(const CookedAsset& a, const CookedAsset& b) {
     ASSERT_EQ(a.levels.size(), b.levels.size()) << a.name;
     for (std::size_t l = 0; l < a.levels.size(); ++l) {
@@ -120,16 +128,10 @@ TEST_F(ProjectSettings, Issue18_AnImageCookedAloneGetsItsFolderCooksSettings) {
 TEST_F(ProjectSettings, Issue18_TheSettingsFilesAreDependencies) {
   Settings settings;
   settings.threads = 1;
-  const std::vector<fs::path> read = files_read(cook({root / "art"}, settings));
-  auto has = [&](const fs::path& path) {
-    for (const fs::path& file : read) {
-      if (fs::equivalent(file, path)) return true;
-    }
-    return false;
-  };
-  EXPECT_TRUE(has(root / "art/hullcook.json"));
-  EXPECT_TRUE(has(root / "art/enemies/bat.hullcook.json"));
-  EXPECT_TRUE(has(root / "art/tiles/grass.png"));
+  const CookResult result = cook({root / "art"}, settings);
+  EXPECT_TRUE(reads(result, root / "art/hullcook.json"));
+  EXPECT_TRUE(reads(result, root / "art/enemies/bat.hullcook.json"));
+  EXPECT_TRUE(reads(result, root / "art/tiles/grass.png"));
 }
 
 TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
@@ -224,6 +226,47 @@ TEST_F(ProjectSettings, AColourKeyPerAssetLetsAMixedFolderCook) {
   write(root / "art/hero.hullcook.json", R"({"color_key": "#ff00f"})");
   EXPECT_THROW(cook({root / "art"}, settings), InputError);
   write(root / "art/hero.hullcook.json", R"({"color_key": 16711935})");
+  EXPECT_THROW(cook({root / "art"}, settings), InputError);
+}
+
+// "skip": the image is no asset, in a folder's cook and cooked alone (a fragment build then links
+// the folder's bytes), and the rule that skips it is a dependency, so that taking it back cooks
+// the image again.
+TEST_F(ProjectSettings, SkippedImagesAreNoAssetsButTheirSettingsAreRead) {
+  write(root / "art/hullcook.json",
+        R"({"assets": [{"match": "tiles/*.png", "tau": 8, "max_verts": 4},
+                       {"match": "enemies/**", "skip": true}]})");
+  Settings settings;
+  settings.threads = 2;
+  const CookResult folder = cook({root / "art"}, settings);
+  ASSERT_EQ(folder.assets.size(), 2u);
+  EXPECT_EQ(folder.assets[0].name, "hero.png");
+  EXPECT_EQ(folder.assets[1].name, "tiles/grass.png");
+  ASSERT_EQ(folder.skipped.size(), 1u);
+  EXPECT_TRUE(fs::equivalent(folder.skipped[0], root / "art/enemies/bat.png"));
+  EXPECT_TRUE(reads(folder, root / "art/hullcook.json"));
+  EXPECT_TRUE(reads(folder, root / "art/enemies/bat.hullcook.json"));
+
+  const CookResult alone = cook({root / "art/enemies/bat.png"}, settings);
+  EXPECT_TRUE(alone.assets.empty());
+  EXPECT_EQ(alone.skipped.size(), 1u);
+  EXPECT_TRUE(reads(alone, root / "art/hullcook.json"));
+
+  // The sidecar comes after the rules: false takes the skip back.
+  write(root / "art/enemies/bat.hullcook.json", R"({"alpha": 200, "skip": false})");
+  EXPECT_EQ(cook({root / "art"}, settings).assets.size(), 3u);
+
+  // A folder whose every image is skipped is refused, as a folder without images is.
+  write(root / "art/enemies/bat.hullcook.json", R"({"skip": true})");
+  try {
+    cook({root / "art/enemies"}, settings);
+    ADD_FAILURE() << "a folder of skipped images was cooked";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("every image in this directory is skipped"),
+              std::string::npos)
+        << e.what();
+  }
+  write(root / "art/enemies/bat.hullcook.json", R"({"skip": "yes"})");
   EXPECT_THROW(cook({root / "art"}, settings), InputError);
 }
 

@@ -43,6 +43,7 @@ std::string padded(const std::string& text, std::size_t width) {
 }
 
 void print_summary(const CookResult& result) {
+  if (result.assets.empty()) return;  // every input skipped: print_warnings says so
   std::printf("%-56s %9s %7s %9s %13s %9s\n", "asset", "vertices", "pieces", "hulls",
               "max concavity", "ms");
   for (const CookedAsset& asset : result.assets) {
@@ -59,6 +60,12 @@ void print_warnings(const CookResult& result) {
     for (const std::string& warning : asset.warnings) {
       std::fprintf(stderr, "hullcook: warning: %s: %s\n", asset.source.c_str(), warning.c_str());
     }
+  }
+  // Skipping is asked for, image by image: said only when it leaves the output empty.
+  if (result.assets.empty() && !result.skipped.empty()) {
+    std::fprintf(stderr,
+                 "hullcook: warning: every input is skipped by its settings (\"skip\"): the "
+                 "output has no assets\n");
   }
 }
 

@@ -165,13 +165,16 @@ Settings with_overrides(Settings settings, const json& object, const std::string
       } catch (const UsageError& e) {
         throw InputError(file + ": 'color_key': " + e.what());
       }
+    } else if (key == "skip") {
+      if (!value.is_boolean()) throw InputError(file + ": 'skip' must be true or false");
+      settings.skip = value.get<bool>();
     } else if (key == "physics") {
       PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
       apply_physics_json(physics, value, file);
       settings.physics = physics;
     } else {
       throw InputError(file + ": unknown setting '" + key +
-                       "' (tau, lods, alpha, color_key, max_verts, measure, physics)");
+                       "' (tau, lods, alpha, color_key, max_verts, measure, physics, skip)");
     }
   }
   return settings;

@@ -9,7 +9,7 @@
 //
 // Keys: tau and lods (as --tau and --lod: "2", "2px", "1%"), alpha (0-255), color_key (as
 // --color-key: "#ff00ff", or null for none), max_verts (0 or 3-65535), measure (sl, sp, h1, h2),
-// physics (an object as in NAME.physics.json). A project file
+// physics (an object as in NAME.physics.json), skip (true: the image is no asset). A project file
 // applies to the images in its directory and below; the nearest one up from an image is used,
 // its globs matched against the image's path relative to the project file's directory ('*' and
 // '?' within a folder, '**' across folders), so that cooking a folder and cooking its images one

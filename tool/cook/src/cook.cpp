@@ -57,6 +57,9 @@ struct InputFile {
   // A frame of a sheet JSON (path): frames->frames[frame] lies in `sheet`, its atlas.
   std::shared_ptr<const Sheet> frames;
   std::size_t frame = 0;
+  // The image's own settings (asset_settings.h), once resolved: null when none differ.
+  std::shared_ptr<const Settings> own;
+  bool own_resolved = false;
 };
 
 bool is_poly_file(const std::filesystem::path& path) { return path.extension() == ".poly"; }
@@ -89,7 +92,9 @@ void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path
                      {},
                      i == 0 ? decode_ms : 0,
                      sheet,
-                     i});
+                     i,
+                     own,
+                     true});
   }
 }
 
@@ -97,18 +102,32 @@ void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path
 // row-major tile number), sorted by name as link sorts assets. The sheet is decoded here, once.
 void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
                     const std::string& name, const Settings& settings,
-                    AssetSettings& asset_settings) {
+                    AssetSettings& asset_settings, std::vector<std::filesystem::path>& skipped) {
+  // Malformed settings are not reported here but when the asset is cooked, in input order (a
+  // directory is walked in no particular order).
+  std::shared_ptr<const Settings> own;
+  bool own_resolved = false;
+  try {
+    own = asset_settings.for_input(path);
+    own_resolved = true;
+  } catch (const InputError&) {
+  }
+  if (own && own->skip) {
+    skipped.push_back(path);
+    return;
+  }
   if (is_sheet_file(path)) {
     add_sheet_frames(files, path, name, settings, asset_settings);
     return;
   }
   if (!settings.grid || is_poly_file(path)) {
-    files.push_back({path.string(), name, nullptr, {}, 0, nullptr, 0});
+    files.push_back(
+        {path.string(), name, nullptr, {}, 0, nullptr, 0, std::move(own), own_resolved});
     return;
   }
   const auto start = Clock::now();
   // Decoded once for its cells: with the sheet's own alpha (its sidecar or project rule).
-  const std::shared_ptr<const Settings> own = asset_settings.for_input(path);
+  if (!own_resolved) own = asset_settings.for_input(path);  // throws what it met above
   auto sheet = std::make_shared<const AlphaImage>(
       load_alpha(path, trace_settings(own ? *own : settings, 0)));
   const double decode_ms = milliseconds_since(start);
@@ -123,7 +142,7 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
   const std::size_t first = files.size();
   for (const GridCell& cell : cells) {
     files.push_back({path.string(), name + "/" + std::to_string(cell.index), sheet, cell,
-                     files.size() == first ? decode_ms : 0, nullptr, 0});
+                     files.size() == first ? decode_ms : 0, nullptr, 0, own, true});
   }
   std::sort(files.begin() + static_cast<std::ptrdiff_t>(first), files.end(),
             [](const InputFile& a, const InputFile& b) { return a.name < b.name; });
@@ -131,19 +150,21 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
 
 // Expands directories (recursively) into image files; files are taken as given. In name order.
 std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs,
-                                      const Settings& settings, AssetSettings& asset_settings) {
+                                      const Settings& settings, AssetSettings& asset_settings,
+                                      std::vector<std::filesystem::path>& skipped) {
   std::vector<InputFile> files;
   for (const std::filesystem::path& input : inputs) {
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) {
       std::vector<InputFile> found;
+      const std::size_t skipped_before = skipped.size();
       for (auto it = std::filesystem::recursive_directory_iterator(input, error);
            !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
         // The non-throwing form: a symbolic link loop is an entry that is no regular file.
         std::error_code entry_error;
         if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
           add_input_file(found, it->path(), it->path().lexically_relative(input).generic_string(),
-                         settings, asset_settings);
+                         settings, asset_settings, skipped);
         } else if (is_image_file(it->path()) && it->is_symlink(entry_error) &&
                    !it->exists(entry_error)) {
           // An asset moved or renamed under its link: left out, the game would miss it.
@@ -154,6 +175,11 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
       // Likely a wrong path (or polygons, which are only read when named): an empty bundle would
       // hide it.
+      if (found.empty() && skipped.size() > skipped_before) {
+        throw InputError(input.string() +
+                         ": every image in this directory is skipped by its settings (\"skip\" "
+                         "in a hullcook.json rule or a sidecar)");
+      }
       if (found.empty()) {
         throw InputError(input.string() +
                          ": no images in this directory (.png, .tga, .bmp, .webp; .poly files "
@@ -164,7 +190,8 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       files.insert(files.end(), std::make_move_iterator(found.begin()),
                    std::make_move_iterator(found.end()));
     } else if (std::filesystem::is_regular_file(input, error)) {
-      add_input_file(files, input, input.filename().generic_string(), settings, asset_settings);
+      add_input_file(files, input, input.filename().generic_string(), settings, asset_settings,
+                     skipped);
     } else {
       throw InputError(input.string() + ": no such file or directory");
     }
@@ -443,7 +470,8 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
                      unsigned threads) {
   auto start = Clock::now();
   // A project file's rules and the image's sidecar may change its settings (asset_settings.h).
-  const std::shared_ptr<const Settings> own = asset_settings.for_input(file.path);
+  const std::shared_ptr<const Settings> own =
+      file.own_resolved ? file.own : asset_settings.for_input(file.path);
   const Settings& settings = own ? *own : given;
   PreparedInput input = is_poly_file(file.path) ? prepare_polygons(file, settings)
                                                 : prepare_image(file, settings, threads);
@@ -664,8 +692,9 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     throw UsageError("--ppu must be positive and within the range of a 32-bit float");
   }
   AssetSettings asset_settings(settings);
-  std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings);
   CookResult result;
+  std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings, result.skipped);
+  std::sort(result.skipped.begin(), result.skipped.end());
   for (const InputFile& file : files) {
     if (file.frames &&
         (result.sheet_images.empty() || result.sheet_images.back() != file.frames->image)) {

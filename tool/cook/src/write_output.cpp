@@ -71,6 +71,10 @@ void for_each_file_read(const CookResult& result,
     for (const std::filesystem::path& file : settings_files.files_for(asset.source)) visit(file);
   }
   for (const std::filesystem::path& image : result.sheet_images) visit(image);
+  // What made them no assets: un-skipping one must cook again.
+  for (const std::filesystem::path& input : result.skipped) {
+    for (const std::filesystem::path& file : settings_files.files_for(input)) visit(file);
+  }
 }
 
 std::vector<std::filesystem::path> files_read(const CookResult& result) {

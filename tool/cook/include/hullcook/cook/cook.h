@@ -91,6 +91,9 @@ struct Settings {
   // Keep the levels' hulls in the result. A streamed output (BundleStream) takes them as each
   // asset is cooked (cook's on_cooked), after which they may go: CookedStats keeps their count.
   bool keep_hulls = true;
+
+  // Set only by a project rule or a sidecar ("skip": true): the image is no asset.
+  bool skip = false;
 };
 
 // The farthest a pivot (Settings, or a sheet frame's) may lie [image sizes]: beyond it the
@@ -105,6 +108,9 @@ struct CookResult {
   std::vector<CookedAsset> assets;        // in name order, whatever the order of the inputs
   std::vector<std::size_t> cooked_index;  // per asset: the index on_cooked was given with it
   std::vector<std::filesystem::path> sheet_images;  // the atlases of sheet JSON inputs
+  // Inputs whose settings say "skip", in name order: no assets, but their settings files are
+  // read (so dependencies of the output).
+  std::vector<std::filesystem::path> skipped;
 };
 
 // Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
