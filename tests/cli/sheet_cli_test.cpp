@@ -294,6 +294,19 @@ TEST_F(SheetCli, ASheetsFragmentLinksToTheBytesOfOneCook) {
   EXPECT_EQ(read_bytes(directory / "linked.hcb"), read_bytes(directory / "one.hcb"));
 }
 
+// "skip" keeps images out, never a sheet named as an input: hero.json shares its sidecar
+// hero.hullcook.json with its atlas hero.png, which a folder's cook would take for an image.
+TEST_F(SheetCli, SkippingTheAtlasKeepsTheSheet) {
+  write("hullcook.json", R"({"assets": [{"match": "*", "skip": true}]})");
+  auto folder =
+      run_hullcook("cook " + directory.string() + " -q -o " + (directory / "folder.hcb").string());
+  EXPECT_EQ(folder.exit_code, static_cast<int>(ExitCode::bad_input)) << folder.output;
+  EXPECT_NE(folder.output.find("every image in this directory is skipped"), std::string::npos)
+      << folder.output;
+  const auto assets = cook((directory / "hash.json").string());
+  EXPECT_EQ(assets.size(), kSprites.size());
+}
+
 TEST_F(SheetCli, DirectoriesAreSearchedForImagesOnly) {
   const auto assets = cook(directory.string());
   EXPECT_EQ(assets.size(), 1u);

@@ -270,5 +270,24 @@ TEST_F(ProjectSettings, SkippedImagesAreNoAssetsButTheirSettingsAreRead) {
   EXPECT_THROW(cook({root / "art"}, settings), InputError);
 }
 
+// Images that the same rules match, without a sidecar, share one copy of their settings: a rule
+// for "**" must not give a cook of 10,000 images 10,000 copies (issue 19's memory).
+TEST_F(ProjectSettings, ImagesOfTheSameRulesShareTheirSettings) {
+  fs::copy_file(root / "art/tiles/grass.png", root / "art/tiles/sand.png");
+  AssetSettings settings;
+  const auto grass = settings.for_input(root / "art/tiles/grass.png");
+  const auto sand = settings.for_input(root / "art/tiles/sand.png");
+  ASSERT_TRUE(grass);
+  EXPECT_EQ(grass.get(), sand.get());
+  EXPECT_EQ(grass->max_verts, 4u);
+  EXPECT_NE(settings.for_input(root / "art/hero.png").get(), grass.get());
+  // A sidecar makes the image's own.
+  write(root / "art/tiles/sand.hullcook.json", R"({"alpha": 10})");
+  const auto own = settings.for_input(root / "art/tiles/sand.png");
+  EXPECT_NE(own.get(), grass.get());
+  EXPECT_EQ(own->alpha, 10);
+  EXPECT_EQ(own->max_verts, 4u);
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -38,7 +38,12 @@ int run_preview(const CLI::App& command, PreviewCommand& preview) {
   }
   check_not_an_input(preview.output, {preview.input});
   CookResult result = cook({preview.input}, preview.settings);
-  if (result.assets.empty()) throw InputError(preview.input.string() + ": nothing to draw");
+  if (result.assets.empty()) {
+    throw InputError(preview.input.string() + (result.skipped.empty()
+                                                   ? ": nothing to draw"
+                                                   : ": skipped by its settings (\"skip\"): "
+                                                     "nothing to draw"));
+  }
   const CookedAsset& asset = result.assets.front();
   for (const std::string& warning : asset.warnings)
     std::cerr << "hullcook: warning: " << warning << "\n";

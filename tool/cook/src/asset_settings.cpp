@@ -222,24 +222,30 @@ std::shared_ptr<const Settings> AssetSettings::for_input(const std::filesystem::
   const std::shared_ptr<const Project> project = project_for(absolute.parent_path());
   const std::filesystem::path sidecar = settings_sidecar(path);
   const bool has_sidecar = file_exists(sidecar);
-  if (project->rules.empty() && !has_sidecar) return nullptr;
-  Settings settings = base_;
-  bool changed = false;
+  std::vector<std::size_t> matched;
   if (!project->rules.empty()) {
     const std::string name =
         absolute.lexically_relative(project->file.parent_path()).generic_string();
-    for (const Rule& rule : project->rules) {
-      if (!glob_matches(rule.glob, name)) continue;
-      settings = with_overrides(std::move(settings), *rule.settings, project->file.string());
-      changed = true;
+    for (std::size_t k = 0; k < project->rules.size(); ++k) {
+      if (glob_matches(project->rules[k].glob, name)) matched.push_back(k);
     }
+  }
+  if (matched.empty() && !has_sidecar) return nullptr;
+  const RulesKey key{project.get(), matched};
+  if (!has_sidecar) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto found = by_rules_.find(key);
+    if (found != by_rules_.end()) return found->second;
+  }
+  Settings settings = base_;
+  for (std::size_t k : matched) {
+    settings =
+        with_overrides(std::move(settings), *project->rules[k].settings, project->file.string());
   }
   if (has_sidecar) {
     settings = with_overrides(std::move(settings), read_json_object(sidecar, "settings"),
                               sidecar.string());
-    changed = true;
   }
-  if (!changed) return nullptr;
   // The levels keep the units of τ, as --lod must.
   for (const Tolerance& lod : settings.lods) {
     if (lod.relative != settings.tau.relative) {
@@ -247,7 +253,10 @@ std::shared_ptr<const Settings> AssetSettings::for_input(const std::filesystem::
                        (has_sidecar ? sidecar : project->file).string() + ")");
     }
   }
-  return std::make_shared<const Settings>(std::move(settings));
+  auto shared = std::make_shared<const Settings>(std::move(settings));
+  if (has_sidecar) return shared;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return by_rules_.emplace(key, std::move(shared)).first->second;
 }
 
 std::vector<std::filesystem::path> AssetSettings::files_for(const std::filesystem::path& path) {

@@ -77,6 +77,10 @@ class AssetSettings {
   Settings base_;
   std::mutex mutex_;
   std::map<std::filesystem::path, std::shared_ptr<const Project>> projects_;  // by directory
+  // The settings made by the same rules of one project, for images without a sidecar: one copy
+  // for every image a rule such as "**" matches (a cook of 10,000 images holds one, not 10,000).
+  using RulesKey = std::pair<const Project*, std::vector<std::size_t>>;
+  std::map<RulesKey, std::shared_ptr<const Settings>> by_rules_;
 };
 
 }  // namespace hullcook

@@ -112,7 +112,9 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
     own_resolved = true;
   } catch (const InputError&) {
   }
-  if (own && own->skip) {
+  // A sheet JSON shares its sidecar (hero.hullcook.json) with its atlas (hero.png), which a folder
+  // cook would take for an image: skipping the atlas must not skip the sheet named beside it.
+  if (!is_sheet_file(path) && (own ? *own : settings).skip) {
     skipped.push_back(path);
     return;
   }

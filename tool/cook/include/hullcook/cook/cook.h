@@ -92,7 +92,8 @@ struct Settings {
   // asset is cooked (cook's on_cooked), after which they may go: CookedStats keeps their count.
   bool keep_hulls = true;
 
-  // Set only by a project rule or a sidecar ("skip": true): the image is no asset.
+  // The image is no asset (a project rule's or a sidecar's "skip": true). Sheet JSON inputs are
+  // never skipped: they share their sidecar with their atlas image.
   bool skip = false;
 };
 
@@ -108,7 +109,7 @@ struct CookResult {
   std::vector<CookedAsset> assets;        // in name order, whatever the order of the inputs
   std::vector<std::size_t> cooked_index;  // per asset: the index on_cooked was given with it
   std::vector<std::filesystem::path> sheet_images;  // the atlases of sheet JSON inputs
-  // Inputs whose settings say "skip", in name order: no assets, but their settings files are
+  // Inputs whose settings say "skip", sorted by path: no assets, but their settings files are
   // read (so dependencies of the output).
   std::vector<std::filesystem::path> skipped;
 };
