@@ -5,6 +5,8 @@
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
 
+#include <sys/uio.h>
+#include <unistd.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -524,12 +526,34 @@ BundleHeader assemble(const std::vector<CookedAsset>& assets, const RecordSource
   return header;
 }
 
-// fwrite and fread of size bytes; an empty vector's data() may be null, which they must not get.
+// fwrite of size bytes; an empty vector's data() may be null, which it must not get.
 bool write_all(std::FILE* file, const void* data, std::size_t size) {
   return size == 0 || std::fwrite(data, 1, size, file) == size;
 }
-bool read_all(std::FILE* file, void* data, std::size_t size) {
-  return size == 0 || std::fread(data, 1, size, file) == size;
+// Reads first_size bytes into first then second_size into second, from offset in the file.
+bool read_at(int fd, std::size_t offset, void* first, std::size_t first_size, void* second,
+             std::size_t second_size) {
+  iovec parts[2] = {{first, first_size}, {second, second_size}};
+  iovec* part = parts;
+  int count = 2;
+  while (count > 0) {
+    if (part->iov_len == 0) {
+      ++part, --count;
+      continue;
+    }
+    const ssize_t got = ::preadv(fd, part, count, static_cast<off_t>(offset));
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    offset += static_cast<std::size_t>(got);
+    for (std::size_t left = static_cast<std::size_t>(got); left > 0;) {
+      const std::size_t taken = std::min(left, part->iov_len);
+      part->iov_base = static_cast<char*>(part->iov_base) + taken;
+      part->iov_len -= taken;
+      left -= taken;
+      if (part->iov_len == 0) ++part, --count;
+    }
+  }
+  return true;
 }
 
 [[noreturn]] void spill_failed(const char* what) {
@@ -593,10 +617,11 @@ void BundleStream::write(std::FILE* out, const std::vector<CookedAsset>& assets,
       vertices.resize(at.shape.vertex_count);
       const std::size_t hull_bytes = hulls.size() * sizeof(HullRecord);
       const std::size_t vertex_bytes = vertices.size() * sizeof(VertexRecord);
+      // One positioned read of both: a seek through the FILE* dropped its buffer and cost a seek
+      // and a read per 4 KiB, per asset (40,000 calls for 10,000 sprites).
       if (std::fflush(stream_.spill_) != 0 ||
-          std::fseek(stream_.spill_, static_cast<long>(at.offset), SEEK_SET) != 0 ||
-          !read_all(stream_.spill_, hulls.data(), hull_bytes) ||
-          !read_all(stream_.spill_, vertices.data(), vertex_bytes)) {
+          !read_at(fileno(stream_.spill_), at.offset, hulls.data(), hull_bytes, vertices.data(),
+                   vertex_bytes)) {
         spill_failed("read");
       }
     }

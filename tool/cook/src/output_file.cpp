@@ -3,6 +3,7 @@
 #include "hullcook/core/error.h"
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -163,19 +164,33 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
   }
 }
 
-void check_not_the_input(const std::filesystem::path& output, const std::filesystem::path& input) {
-  std::error_code error;
-  if (std::filesystem::equivalent(output, input, error)) {
-    throw UsageError(output.string() + ": this output would replace an input (" + input.string() +
+// As std::filesystem::equivalent: the same device and inode, links followed.
+OutputGuard::OutputGuard(const std::filesystem::path& output) : output_(output) {
+  struct stat status {};
+  exists_ = ::stat(output.c_str(), &status) == 0;
+  device_ = static_cast<std::uint64_t>(status.st_dev);
+  inode_ = static_cast<std::uint64_t>(status.st_ino);
+}
+
+void OutputGuard::check(const std::filesystem::path& input) const {
+  if (!exists_) return;
+  struct stat status {};
+  if (::stat(input.c_str(), &status) != 0) return;
+  if (static_cast<std::uint64_t>(status.st_dev) == device_ &&
+      static_cast<std::uint64_t>(status.st_ino) == inode_) {
+    throw UsageError(output_.string() + ": this output would replace an input (" + input.string() +
                      "); write it elsewhere");
   }
 }
 
+void check_not_the_input(const std::filesystem::path& output, const std::filesystem::path& input) {
+  OutputGuard(output).check(input);
+}
+
 void check_not_an_input(const std::filesystem::path& output,
                         const std::vector<std::filesystem::path>& inputs) {
-  std::error_code error;
-  if (!std::filesystem::exists(output, error)) return;
-  for (const std::filesystem::path& input : inputs) check_not_the_input(output, input);
+  const OutputGuard guard(output);
+  for (const std::filesystem::path& input : inputs) guard.check(input);
 }
 
 }  // namespace hullcook

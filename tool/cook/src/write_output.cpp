@@ -85,10 +85,13 @@ std::vector<std::filesystem::path> files_read(const CookResult& result) {
 
 void check_not_read(const CookResult& result, const std::vector<std::filesystem::path>& outputs) {
   for (const std::filesystem::path& output : outputs) {
-    std::error_code error;
-    if (!std::filesystem::exists(output, error)) continue;
-    for_each_file_read(
-        result, [&](const std::filesystem::path& file) { check_not_the_input(output, file); });
+    const OutputGuard guard(output);
+    if (!guard.output_exists()) continue;
+    // Each file once: every asset of a folder lists its project file.
+    std::set<std::filesystem::path> checked;
+    for_each_file_read(result, [&](const std::filesystem::path& file) {
+      if (checked.insert(file).second) guard.check(file);
+    });
   }
 }
 

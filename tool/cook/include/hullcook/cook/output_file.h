@@ -1,6 +1,7 @@
 // Writing outputs without ever leaving a partial file behind, and never over an input.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -46,5 +47,21 @@ void check_not_an_input(const std::filesystem::path& output,
 
 // check_not_an_input against one input (output is known to exist; no error if input does not).
 void check_not_the_input(const std::filesystem::path& output, const std::filesystem::path& input);
+
+// check_not_the_input for many inputs, the output looked at once (a cook of 10,000 images checks
+// every file it read).
+class OutputGuard {
+ public:
+  explicit OutputGuard(const std::filesystem::path& output);
+  // Whether the output exists: else no input can be it.
+  bool output_exists() const { return exists_; }
+  // Throws UsageError naming both if input is the output, by any path or link.
+  void check(const std::filesystem::path& input) const;
+
+ private:
+  std::filesystem::path output_;
+  bool exists_ = false;
+  std::uint64_t device_ = 0, inode_ = 0;
+};
 
 }  // namespace hullcook
