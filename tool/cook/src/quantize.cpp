@@ -24,8 +24,12 @@ struct GridPoint {
   bool operator==(const GridPoint& o) const { return x == o.x && y == o.y; }
 };
 
-std::int64_t cross(const GridPoint& o, const GridPoint& a, const GridPoint& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+// Grid coordinates reach ±2e9 (quantize_hull), so their differences' products need more than
+// 64 bits before a hull is found too wide.
+using Wide = __int128;
+
+Wide cross(const GridPoint& o, const GridPoint& a, const GridPoint& b) {
+  return Wide{a.x - o.x} * (b.y - o.y) - Wide{a.y - o.y} * (b.x - o.x);
 }
 
 // Andrew's monotone chain on the integer grid, exact: counter-clockwise, strictly convex (no
@@ -77,14 +81,16 @@ enum class Attempt { ok, too_coarse, too_wide };
 
 // How a hull vertex meets the grid. nearest: the closest grid point. outward: of the corners of
 // the grid cell holding it that lie as close (step/√2, the error bound readers report), the one
-// farthest from the hull's vertex centroid. A hull thinner than a quantum rounds to a segment;
-// the finer steps that would keep it a polygon may no longer store the asset's largest hull in
-// 16-bit deltas, while pushing its sides apart may keep it one at the same step.
-enum class Rounding { nearest, outward };
+// farthest from the hull's vertex centroid. nudged: the nearest grid points, then, while they
+// lie on one line, the vertex moved to another of those corners that spreads them most (see
+// spread_nudged). A hull thinner than a quantum rounds to a segment; the finer steps that would
+// keep it a polygon may no longer store the asset's largest hull in 16-bit deltas, while pushing
+// its sides apart may keep it one at the same step.
+enum class Rounding { nearest, outward, nudged };
 
 // The grid point for p at quantum; centroid only for outward.
 GridPoint round_to_grid(Vec2 p, double quantum, Rounding rounding, Vec2 centroid) {
-  if (rounding == Rounding::nearest)
+  if (rounding != Rounding::outward)
     return {static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
             static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
   const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
@@ -102,6 +108,73 @@ GridPoint round_to_grid(Vec2 p, double quantum, Rounding rounding, Vec2 centroid
     }
   }
   return best;
+}
+
+// The corners of p's grid cell within quantum/√2 of p (nearest rounding's worst move), into
+// corners; the nearest grid point is always one of them.
+void close_corners(Vec2 p, double quantum, std::vector<GridPoint>& corners) {
+  corners.clear();
+  const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double gx = low_x + (corner & 1), gy = low_y + (corner >> 1);
+    const Vec2 moved{gx * quantum - p.x, gy * quantum - p.y};
+    if (glm::dot(moved, moved) <= 0.5 * quantum * quantum)
+      corners.push_back({static_cast<std::int64_t>(gx), static_cast<std::int64_t>(gy)});
+  }
+}
+
+// How far apart points are, to compare nudges exactly: a polygon's twice area beats a segment's
+// squared length, which beats a single point.
+struct Spread {
+  int dimension = 0;
+  Wide size = 0;  // twice the area, or the squared length, exact
+  bool operator>(const Spread& o) const {
+    return dimension > o.dimension || (dimension == o.dimension && size > o.size);
+  }
+};
+
+Spread spread_of(std::vector<GridPoint> points, std::vector<GridPoint>& hull) {
+  strict_convex_hull(points, hull);
+  if (hull.size() < 2) return {};
+  if (hull.size() == 2) {
+    const Wide dx = hull[1].x - hull[0].x, dy = hull[1].y - hull[0].y;
+    return {1, dx * dx + dy * dy};
+  }
+  Wide twice_area = 0;
+  for (std::size_t i = 1; i + 1 < hull.size(); ++i)
+    twice_area += cross(hull[0], hull[i], hull[i + 1]);
+  return {2, twice_area};
+}
+
+// Nudged rounding of hull's vertices, rounded to the nearest grid points in points: while the
+// points lie on one line, the one move of a vertex to another close corner that spreads them
+// most (the first such in vertex and corner order). Each move keeps every vertex within
+// quantum/√2 of its grid point, so the bound holds as for the other roundings; the points stay one
+// per vertex, so the stored hull has no more vertices than the cooked one.
+void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& points) {
+  std::vector<GridPoint> corners, scratch;
+  Spread current = spread_of(points, scratch);
+  // Two moves make a polygon of points that all rounded to one; a third is spare. More would
+  // cost O(n²) each on a long hull that a finer step stores anyway.
+  for (int moves = 0; current.dimension < 2 && moves < 3; ++moves) {
+    Spread best = current;
+    std::size_t best_vertex = hull.size();
+    GridPoint best_corner;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      close_corners(hull[i], quantum, corners);
+      const GridPoint kept = points[i];
+      for (const GridPoint& corner : corners) {
+        if (corner == kept) continue;
+        points[i] = corner;
+        const Spread spread = spread_of(points, scratch);
+        if (spread > best) best = spread, best_vertex = i, best_corner = corner;
+      }
+      points[i] = kept;
+    }
+    if (best_vertex == hull.size()) return;  // no move spreads them: a finer step must
+    points[best_vertex] = best_corner;
+    current = best;
+  }
 }
 
 // Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
@@ -136,6 +209,14 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
     const double dy = static_cast<double>(q.y) * quantum - p.y;
     moved_squared = std::max(moved_squared, dx * dx + dy * dy);
     size = std::max({size, std::fabs(p.x), std::fabs(p.y)});
+  }
+  if (rounding == Rounding::nudged) {
+    spread_nudged(hull, quantum, points);
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const double dx = static_cast<double>(points[i].x) * quantum - hull[i].x;
+      const double dy = static_cast<double>(points[i].y) * quantum - hull[i].y;
+      moved_squared = std::max(moved_squared, dx * dx + dy * dy);
+    }
   }
   strict_convex_hull(points, grid);
   if (grid.size() < format::kMinHullVertices) return Attempt::too_coarse;
@@ -222,30 +303,61 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
                        "pixels per unit too small for the bundle's quantization grid (a step of " +
                            std::to_string(result.step) + " output units)");
   }
-  // At each step each hull is rounded to the nearest grid points, else outward (which may keep a
-  // hull thinner than a quantum a polygon); the step is halved until every hull is stored within
-  // the bound.
+  // Stores every hull at step with the first rounding_count roundings (nearest, outward, nudged)
+  // into result; too_wide_extent is set when a hull spans too many quanta.
   double too_wide_extent = 0.0;
-  const float first_step = result.step;
-  bool refined = false;  // whether the step that spanned too many quanta was halved
-  for (int attempt = 0; attempt < 24 && too_wide_extent == 0.0; ++attempt, result.step *= 0.5f) {
-    if (!(result.step > 0.0f)) break;
+  const auto store_at = [&](float step, std::size_t rounding_count) {
+    constexpr Rounding kRoundings[] = {Rounding::nearest, Rounding::outward, Rounding::nudged};
+    result.step = step;
     result.levels.assign(levels.size(), {});
-    Attempt outcome = Attempt::ok;
-    for (std::size_t l = 0; l < levels.size() && outcome == Attempt::ok; ++l) {
+    for (std::size_t l = 0; l < levels.size(); ++l) {
       for (const Ring& hull : levels[l].hulls) {
         QuantizedHull quantized;
-        for (Rounding rounding : {Rounding::nearest, Rounding::outward}) {
+        Attempt outcome = Attempt::too_coarse;
+        for (std::size_t r = 0; r < rounding_count && outcome == Attempt::too_coarse; ++r)
           outcome =
-              quantize_hull(asset, hull, result.step, bound, rounding, quantized, too_wide_extent);
-          if (outcome != Attempt::too_coarse) break;
-        }
-        if (outcome != Attempt::ok) break;
+              quantize_hull(asset, hull, step, bound, kRoundings[r], quantized, too_wide_extent);
+        if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
       }
     }
+    return Attempt::ok;
+  };
+  // At each step each hull is rounded to the nearest grid points, else outward (which may keep a
+  // hull thinner than a quantum a polygon); the step is halved until every hull is stored within
+  // the bound.
+  const float first_step = result.step;
+  bool refined = false;  // whether the step that spanned too many quanta was halved
+  for (int attempt = 0; attempt < 24; ++attempt) {
+    const float step = std::ldexp(first_step, -attempt);
+    if (!(step > 0.0f)) break;
+    const Attempt outcome = store_at(step, 2);
     if (outcome == Attempt::ok) return result;
-    if (outcome == Attempt::too_wide) refined = result.step < first_step;
+    if (outcome == Attempt::too_wide) {
+      refined = attempt > 0;
+      break;
+    }
+  }
+  // When no step does, the asset starts again with nudged rounding as a third choice and with
+  // steps up to 1/128 finer than the first (still within 16-bit deltas for the widest hull, whose
+  // span sets the first step at 65 000 quanta; each is a different alignment of the grid for a
+  // hull far from the origin), before halving again: a hull thinner than a quantum beside one that
+  // spans nearly the grid (a comb's sliver beside its spine) is then stored at the step the spine
+  // needs. This comes last so that every asset the first pass stores keeps its bytes; the
+  // widest hull alone failing at the first step is beyond it.
+  if (too_wide_extent == 0.0 || refined) {
+    // A tile's step stays a power of two of its half pixel, so that its borders stay on the grid.
+    const int finer_steps = asset.tile ? 0 : 8;
+    for (int attempt = 0; attempt < finer_steps + 24; ++attempt) {
+      const bool finer = attempt <= finer_steps;
+      const float step = finer ? static_cast<float>(first_step * (1.0 - attempt / 1024.0))
+                               : std::ldexp(first_step, finer_steps - attempt);
+      if (!(step > 0.0f)) break;
+      too_wide_extent = 0.0;
+      const Attempt outcome = store_at(step, 3);
+      if (outcome == Attempt::ok) return result;
+      if (outcome == Attempt::too_wide && !finer) break;
+    }
   }
   if (too_wide_extent > 0.0) {
     // The step is first halved for a hull that rounds to a segment, a sliver of the outline
