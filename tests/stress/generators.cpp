@@ -496,6 +496,67 @@ Shape random_simple(Random& random) {
   return shape;
 }
 
+// Long teeth or spikes on a spine or core that holds a few holes: a comb (teeth 2 to 300 times
+// as long as wide, gaps 0.05 to 2) or a star (8 to 300 spikes 5 to 500 long around a core of
+// radius 10). Each cut peels off one tooth, after the holes are opened: the shapes on which the
+// decomposition tree held a copy of the comb per tooth, and validation and the thin-wall check
+// tested every pair of the spikes' long edges (stop 42).
+Shape teeth(Random& random) {
+  Shape shape;
+  Region region;
+  if (random.chance(0.5)) {
+    const int count = random.integer(3, 120);
+    const double gap = random.pick(std::vector<double>{0.05, 0.3, 1.0, 2.0});
+    const double length = random.pick(std::vector<double>{2.0, 10.0, 50.0, 300.0});
+    const double spine = random.uniform(3, 8), width = 1.0;
+    auto left = [&](int t) { return t * (width + gap); };
+    const double right = left(count - 1) + width;
+    Ring& outer = region.outer;
+    outer = {{0, 0}, {right, 0}};
+    for (int t = count - 1; t >= 0; --t) {
+      outer.push_back({left(t) + width, spine + length});
+      outer.push_back({left(t), spine + length});
+      if (t > 0) {
+        outer.push_back({left(t), spine});
+        outer.push_back({left(t - 1) + width, spine});
+      }
+    }
+    // Square holes in the spine, at least half a side apart and a quarter side from its ends.
+    const double side = std::min(spine / 3, right / 3);
+    const int holes =
+        std::min(random.integer(1, 5), std::max(1, static_cast<int>(right / (1.5 * side))));
+    const double pitch = right / holes;
+    for (int h = 0; h < holes; ++h) {
+      const double x = pitch * h + (pitch - side) / 2;
+      region.holes.push_back(reversed(rectangle(Box{x, side, x + side, 2 * side})));
+    }
+    shape.thinnest = std::min({gap, width, side / 4});
+    shape.description << "comb of " << count << " teeth " << length << " long, gaps " << gap
+                      << ", spine " << spine << ", " << region.holes.size() << " holes";
+  } else {
+    const int count = random.integer(8, 300);
+    const double core = 10.0;
+    const double length = random.pick(std::vector<double>{5.0, 50.0, 500.0});
+    for (int i = 0; i < count; ++i) {
+      const double tip = 2 * kPi * i / count, notch = 2 * kPi * (i + 0.5) / count;
+      region.outer.push_back({(core + length) * std::cos(tip), (core + length) * std::sin(tip)});
+      region.outer.push_back({core * std::cos(notch), core * std::sin(notch)});
+    }
+    const int holes = random.integer(1, 4);
+    for (int h = 0; h < holes; ++h) {
+      const double angle = 2 * kPi * h / holes;
+      region.holes.push_back(
+          reversed(regular_polygon({4.0 * std::cos(angle), 4.0 * std::sin(angle)}, 1.5,
+                                   random.integer(3, 12), random.uniform(0, kPi))));
+    }
+    shape.thinnest = std::min(2 * core * std::sin(kPi / count), 1.0);
+    shape.description << "star of " << count << " spikes " << length << " long, " << holes
+                      << " holes";
+  }
+  shape.regions.push_back(std::move(region));
+  return shape;
+}
+
 Placement draw_placement(Random& random, double thinnest) {
   Placement placement;
   if (random.chance(0.3)) placement.rotation = random.uniform(0, 2 * kPi);
@@ -524,9 +585,9 @@ double round_to(double x, double step) {
 }  // namespace
 
 const std::vector<Family>& all_families() {
-  static const std::vector<Family> families{Family::thin_wall,     Family::grid, Family::row,
-                                            Family::ring,          Family::star, Family::button,
-                                            Family::random_simple, Family::dense};
+  static const std::vector<Family> families{Family::thin_wall,     Family::grid,  Family::row,
+                                            Family::ring,          Family::star,  Family::button,
+                                            Family::random_simple, Family::dense, Family::teeth};
   return families;
 }
 
@@ -548,6 +609,8 @@ const char* family_name(Family family) {
       return "random_simple";
     case Family::dense:
       return "dense";
+    case Family::teeth:
+      return "teeth";
   }
   return "?";
 }
@@ -606,6 +669,9 @@ GeneratedCase generate_case(Family family, std::uint64_t seed) {
       break;
     case Family::dense:
       shape = dense(random);
+      break;
+    case Family::teeth:
+      shape = teeth(random);
       break;
   }
   const Placement placement = draw_placement(random, shape.thinnest);

@@ -26,6 +26,8 @@ enum class Family {
                   // vertices inserted along edges: nearly collinear in binary; no holes
   dense,  // 300-1500 nearly collinear vertices: a jittered circle or a rectangle bulging out by
           // 1e-9 to 1e-3 of its size, mostly with 1-3 round holes of 60-600 sides
+  teeth,  // a comb of up to 120 teeth up to 300 long, or a star of up to 300 spikes up to 500
+          // long, with 1-5 holes in its spine or core
 };
 
 const std::vector<Family>& all_families();
