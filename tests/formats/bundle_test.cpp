@@ -415,6 +415,24 @@ TEST(Bundle, SliversBesideAHullSpanningTheGridAreStoredAtItsStep) {
   expect_round_trip(assets, bundle);
 }
 
+// What no rounding stores: a triangle a millionth across, a third of a quantum from a grid point,
+// beside a hull spanning nearly 65 000 quanta. It rounds to one point at the first steps, and a
+// halved step cannot hold the wide hull: exit 3 with a message naming the asset and the ways out.
+TEST(Bundle, AHullSmallerThanAQuantumBesideOneSpanningTheGridIsRefusedWithTheWayOut) {
+  const std::vector<Ring> hulls{test::rectangle(0, 0, 60000, 10),
+                                {{100, 100}, {100 + 1e-6, 100}, {100, 100 + 1e-6}}};
+  try {
+    write_bundle({test::make_asset("speck", {{1.0, hulls}})});
+    FAIL() << "stored";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("asset 'speck'"), std::string::npos) << message;
+    EXPECT_NE(message.find("a hull spans 59999.99"), std::string::npos) << message;
+    EXPECT_NE(message.find("--simplify or a larger tau"), std::string::npos) << message;
+    EXPECT_NE(message.find("write glTF"), std::string::npos) << message;
+  }
+}
+
 TEST(Bundle, WriterRefusesWhatItCannotStore) {
   auto box = [](const std::string& name) {
     return test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}});

@@ -367,9 +367,10 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
                    " output units, more than the 65535 quanta of 16-bit deltas at the required "
                    "precision of " +
                    std::to_string(bound) + " units" +
-                   (refined ? " once the step is refined for a hull thinner than it; cook it with "
-                              "--simplify or a larger tau"
-                            : "; cook it with a larger tau"));
+                   (refined ? " once the step is refined for a hull thinner or smaller than it; "
+                              "cook it with --simplify or a larger tau"
+                            : "; cook it with a larger tau") +
+                   ", or write glTF (.glb), which stores any hull");
   }
   bundle_asset_error(asset, "a hull is too thin to be stored as a convex polygon within " +
                                 std::to_string(bound) + " output units");
