@@ -77,7 +77,13 @@ double hausdorff(const Ring& a, const Ring& b) {
   return worst;
 }
 
-enum class Attempt { ok, too_coarse, too_wide };
+enum class Attempt { ok, too_coarse, too_wide, too_far };
+
+// Why a hull was not stored at a step: the span of a too wide one, or what is too far.
+struct Refusal {
+  double extent = 0.0;  // [output units]
+  std::string too_far;  // the message
+};
 
 // How a hull vertex meets the grid. nearest: the closest grid point. outward: of the corners of
 // the grid cell holding it that lie as close (step/√2, the error bound readers report), the one
@@ -152,10 +158,13 @@ Spread spread_of(std::vector<GridPoint> points, std::vector<GridPoint>& hull) {
 // quantum/√2 of its grid point, so the bound holds as for the other roundings; the points stay one
 // per vertex, so the stored hull has no more vertices than the cooked one.
 void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& points) {
+  // Each try sorts the points: O(n² log n) a move. A hull of more vertices is left to the finer
+  // steps (a thin arc of 8,000 vertices took 12 s over the second pass's steps).
+  constexpr std::size_t kMostVertices = 64;
+  if (hull.size() > kMostVertices) return;
   std::vector<GridPoint> corners, scratch;
   Spread current = spread_of(points, scratch);
-  // Two moves make a polygon of points that all rounded to one; a third is spare. More would
-  // cost O(n²) each on a long hull that a finer step stores anyway.
+  // Two moves make a polygon of points that all rounded to one; a third is spare.
   for (int moves = 0; current.dimension < 2 && moves < 3; ++moves) {
     Spread best = current;
     std::size_t best_vertex = hull.size();
@@ -178,9 +187,10 @@ void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& poi
 }
 
 // Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
-// the bound (a finer step may fix both), too_wide when it spans more than 16-bit deltas hold.
-Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, double bound,
-                      Rounding rounding, QuantizedHull& out, double& extent) {
+// the bound (a finer step may fix both), too_wide when it spans more than 16-bit deltas hold,
+// too_far when a vertex lies beyond the 32-bit grid (neither a finer step fixes).
+Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding rounding,
+                      QuantizedHull& out, Refusal& refusal) {
   const double quantum = step;
   // Scratch, reused: one hull after the other.
   thread_local std::vector<GridPoint> points, grid;
@@ -195,12 +205,12 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   for (const Vec2& p : hull) {
     // Keep |base| + 2^15 within int32.
     if (std::fabs(p.x / quantum) > 2.0e9 || std::fabs(p.y / quantum) > 2.0e9) {
-      bundle_asset_error(asset,
-                         "a hull vertex at (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
-                             ") is too far from the origin for the bundle's 32-bit grid (at most " +
-                             std::to_string(2.0e9 * quantum) + " output units at its step of " +
-                             std::to_string(quantum) +
-                             "); move the input nearer the origin, or write glTF");
+      refusal.too_far = "a hull vertex at (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                        ") is too far from the origin for the bundle's 32-bit grid (at most " +
+                        std::to_string(2.0e9 * quantum) + " output units at its step of " +
+                        std::to_string(quantum) +
+                        "); move the input nearer the origin, or write glTF";
+      return Attempt::too_far;
     }
     const GridPoint q = round_to_grid(p, quantum, rounding, centroid);
     points.push_back(q);
@@ -228,7 +238,7 @@ Attempt quantize_hull(const CookedAsset& asset, const Ring& hull, float step, do
   }
   constexpr std::int64_t kDeltaRange = 65535;  // int16 span
   if (max_x - min_x > kDeltaRange || max_y - min_y > kDeltaRange) {
-    extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
+    refusal.extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
     return Attempt::too_wide;
   }
   // Centre the base so that deltas fall in [-32768, 32767].
@@ -304,8 +314,8 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
                            std::to_string(result.step) + " output units)");
   }
   // Stores every hull at step with the first rounding_count roundings (nearest, outward, nudged)
-  // into result; too_wide_extent is set when a hull spans too many quanta.
-  double too_wide_extent = 0.0;
+  // into result; refusal says why a hull was not.
+  Refusal refusal;
   const auto store_at = [&](float step, std::size_t rounding_count) {
     constexpr Rounding kRoundings[] = {Rounding::nearest, Rounding::outward, Rounding::nudged};
     result.step = step;
@@ -315,8 +325,7 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
         QuantizedHull quantized;
         Attempt outcome = Attempt::too_coarse;
         for (std::size_t r = 0; r < rounding_count && outcome == Attempt::too_coarse; ++r)
-          outcome =
-              quantize_hull(asset, hull, step, bound, kRoundings[r], quantized, too_wide_extent);
+          outcome = quantize_hull(hull, step, bound, kRoundings[r], quantized, refusal);
         if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
       }
@@ -325,15 +334,15 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
   };
   // At each step each hull is rounded to the nearest grid points, else outward (which may keep a
   // hull thinner than a quantum a polygon); the step is halved until every hull is stored within
-  // the bound.
+  // the bound. A finer step cannot store a hull too wide or too far.
   const float first_step = result.step;
-  bool refined = false;  // whether the step that spanned too many quanta was halved
-  for (int attempt = 0; attempt < 24; ++attempt) {
-    const float step = std::ldexp(first_step, -attempt);
-    if (!(step > 0.0f)) break;
-    const Attempt outcome = store_at(step, 2);
+  Attempt outcome = Attempt::too_coarse;
+  bool refined = false;  // whether the step that met a hull too wide or too far was halved
+  float step = first_step;
+  for (int attempt = 0; attempt < 24 && step > 0.0f; ++attempt, step *= 0.5f) {
+    outcome = store_at(step, 2);
     if (outcome == Attempt::ok) return result;
-    if (outcome == Attempt::too_wide) {
+    if (outcome == Attempt::too_wide || outcome == Attempt::too_far) {
       refined = attempt > 0;
       break;
     }
@@ -343,27 +352,31 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
   // span sets the first step at 65 000 quanta; each is a different alignment of the grid for a
   // hull far from the origin), before halving again: a hull thinner than a quantum beside one that
   // spans nearly the grid (a comb's sliver beside its spine) is then stored at the step the spine
-  // needs. This comes last so that every asset the first pass stores keeps its bytes; the
-  // widest hull alone failing at the first step is beyond it.
-  if (too_wide_extent == 0.0 || refined) {
+  // needs. This comes last so that every asset the first pass stores keeps its bytes; a hull too
+  // wide or too far at the first step is beyond it.
+  if (outcome == Attempt::too_coarse || refined) {
     // A tile's step stays a power of two of its half pixel, so that its borders stay on the grid.
     const int finer_steps = asset.tile ? 0 : 8;
-    for (int attempt = 0; attempt < finer_steps + 24; ++attempt) {
+    step = first_step;
+    for (int attempt = 0; attempt < finer_steps + 24 && step > 0.0f; ++attempt) {
       const bool finer = attempt <= finer_steps;
-      const float step = finer ? static_cast<float>(first_step * (1.0 - attempt / 1024.0))
-                               : std::ldexp(first_step, finer_steps - attempt);
-      if (!(step > 0.0f)) break;
-      too_wide_extent = 0.0;
-      const Attempt outcome = store_at(step, 3);
+      if (!finer) step *= 0.5f;  // as the first pass halves
+      outcome =
+          store_at(finer ? static_cast<float>(first_step * (1.0 - attempt / 1024.0)) : step, 3);
       if (outcome == Attempt::ok) return result;
-      if (outcome == Attempt::too_wide && !finer) break;
+      // Too wide or too far at the first step, or at a halved one: no later step helps.
+      if ((outcome == Attempt::too_wide || outcome == Attempt::too_far) &&
+          (attempt == 0 || !finer)) {
+        break;
+      }
     }
   }
-  if (too_wide_extent > 0.0) {
+  if (outcome == Attempt::too_far) bundle_asset_error(asset, refusal.too_far);
+  if (outcome == Attempt::too_wide) {
     // The step is first halved for a hull that rounds to a segment, a sliver of the outline
     // that simplifying it (--simplify) or a larger tau removes.
     bundle_asset_error(
-        asset, "a hull spans " + std::to_string(too_wide_extent) +
+        asset, "a hull spans " + std::to_string(refusal.extent) +
                    " output units, more than the 65535 quanta of 16-bit deltas at the required "
                    "precision of " +
                    std::to_string(bound) + " units" +
