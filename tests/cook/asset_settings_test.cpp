@@ -3,6 +3,7 @@
 // given on the command line for it alone, whether its folder or the image itself is cooked, and
 // both files are dependencies of the output.
 #include "asset_settings.h"  // tool/cook/src
+#include "listed_files.h"
 
 #include "../cli/png_writer.h"
 
@@ -33,6 +34,30 @@ TEST(Glob, StarsStayInAFolderDoubleStarsCrossThem) {
   EXPECT_FALSE(glob_matches("h?ro.png", "heero.png"));
   EXPECT_TRUE(glob_matches("**/enemies/bat*", "world/enemies/bat_2.png"));
   EXPECT_FALSE(glob_matches("tiles/*", "tiles"));
+}
+
+// The names a folder walk listed answer whether a sidecar exists: a name the walk did not see in a
+// directory it listed is absent (even if created since), a directory it did not list is asked of
+// the file system, and a listed name is checked there too (a broken link is no file).
+TEST(ListedFiles, ListedDirectoriesAnswerWithoutTheFileSystem) {
+  const fs::path root = fs::temp_directory_path() / "hullcook_listed_files";
+  fs::remove_all(root);
+  fs::create_directories(root / "walked");
+  fs::create_directories(root / "other");
+  std::ofstream(root / "walked/hero.png") << "x";
+  std::ofstream(root / "other/hero.physics.json") << "{}";
+  fs::create_symlink(root / "nowhere.json", root / "walked/broken.hullcook.json");
+  ListedFiles listed;
+  for (const fs::directory_entry& entry : fs::directory_iterator(root / "walked"))
+    listed.add(entry.path());
+  listed.seal();
+  EXPECT_TRUE(listed.exists(root / "walked/hero.png"));
+  std::ofstream(root / "walked/hero.hullcook.json") << "{}";  // after the walk
+  EXPECT_FALSE(listed.exists(root / "walked/hero.hullcook.json"));
+  EXPECT_FALSE(listed.exists(root / "walked/broken.hullcook.json"));
+  EXPECT_TRUE(listed.exists(root / "other/hero.physics.json"));
+  EXPECT_FALSE(listed.exists(root / "other/hero.hullcook.json"));
+  fs::remove_all(root);
 }
 
 class ProjectSettings : public ::testing::Test {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -436,6 +437,29 @@ TEST_F(Sidecar, OverridesTheCommandLineFieldByField) {
 
 TEST_F(Sidecar, WithoutSidecarOrOptionsThereAreNoProperties) {
   EXPECT_FALSE(cook({sprite}, Settings{}).assets.at(0).physics);
+}
+
+// A folder's cook looks its images' sidecars up in the names its walk listed (ListedFiles), not
+// with a system call each: it must find the same ones as a cook of the image alone.
+TEST_F(Sidecar, AFolderCookFindsTheSidecarsOfItsListing) {
+  write_sidecar(R"({"density": 2.5})");
+  std::filesystem::copy_file(sprite, directory / "bare.png");
+  const CookResult folder = cook({directory}, Settings{});
+  ASSERT_EQ(folder.assets.size(), 2u);
+  EXPECT_FALSE(folder.assets[0].physics);  // bare.png
+  ASSERT_TRUE(folder.assets[1].physics);   // ice.png
+  EXPECT_FLOAT_EQ(folder.assets[1].physics->density, 2.5f);
+  const std::vector<std::filesystem::path> read = files_read(folder);
+  EXPECT_NE(std::find(read.begin(), read.end(), directory / "ice.physics.json"), read.end());
+  EXPECT_EQ(std::find(read.begin(), read.end(), directory / "bare.physics.json"), read.end());
+  // A listed name that is no file is still refused, naming it.
+  std::filesystem::create_directories(directory / "bare.physics.json");
+  try {
+    cook({directory}, Settings{});
+    ADD_FAILURE() << "a directory taken for a sidecar";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bare.physics.json"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(Sidecar, MalformedSidecarIsBadInputNamingIt) {

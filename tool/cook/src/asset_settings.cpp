@@ -221,7 +221,7 @@ std::shared_ptr<const Settings> AssetSettings::for_input(const std::filesystem::
   const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
   const std::shared_ptr<const Project> project = project_for(absolute.parent_path());
   const std::filesystem::path sidecar = settings_sidecar(path);
-  const bool has_sidecar = file_exists(sidecar);
+  const bool has_sidecar = exists(sidecar);
   std::vector<std::size_t> matched;
   if (!project->rules.empty()) {
     const std::string name =
@@ -264,8 +264,12 @@ std::vector<std::filesystem::path> AssetSettings::files_for(const std::filesyste
   const std::filesystem::path absolute = std::filesystem::absolute(path).lexically_normal();
   const std::shared_ptr<const Project> project = project_for(absolute.parent_path());
   if (!project->file.empty()) files.push_back(project->file);
-  if (file_exists(settings_sidecar(path))) files.push_back(settings_sidecar(path));
+  if (exists(settings_sidecar(path))) files.push_back(settings_sidecar(path));
   return files;
+}
+
+bool AssetSettings::exists(const std::filesystem::path& path) const {
+  return listing_ ? listing_->exists(path) : file_exists(path);
 }
 
 }  // namespace hullcook

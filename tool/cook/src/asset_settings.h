@@ -17,6 +17,7 @@
 #pragma once
 
 #include "hullcook/cook/cook.h"
+#include "listed_files.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -63,6 +64,11 @@ class AssetSettings {
   // The settings files that exist for the image at path: its project file and its sidecar.
   std::vector<std::filesystem::path> files_for(const std::filesystem::path& path);
 
+  // Sidecars are looked up in listing where it holds their directory (see ListedFiles).
+  void use_listing(std::shared_ptr<const ListedFiles> listing) { listing_ = std::move(listing); }
+  // Whether a file exists at path (a sidecar): ListedFiles::exists, or std::filesystem's.
+  bool exists(const std::filesystem::path& path) const;
+
  private:
   struct Rule {
     std::string glob;
@@ -75,6 +81,7 @@ class AssetSettings {
   std::shared_ptr<const Project> project_for(const std::filesystem::path& directory);
 
   Settings base_;
+  std::shared_ptr<const ListedFiles> listing_;
   std::mutex mutex_;
   std::map<std::filesystem::path, std::shared_ptr<const Project>> projects_;  // by directory
   // The settings made by the same rules of one project, for images without a sidecar: one copy

@@ -14,6 +14,7 @@
 #include "hullcook/core/poly_io.h"
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/trace/trace.h"
+#include "listed_files.h"
 #include "sheet.h"
 #include "tile_snap.h"
 
@@ -153,6 +154,7 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
 // Expands directories (recursively) into image files; files are taken as given. In name order.
 std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& inputs,
                                       const Settings& settings, AssetSettings& asset_settings,
+                                      ListedFiles& listed,
                                       std::vector<std::filesystem::path>& skipped) {
   std::vector<InputFile> files;
   for (const std::filesystem::path& input : inputs) {
@@ -160,13 +162,15 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
     if (std::filesystem::is_directory(input, error)) {
       std::vector<InputFile> found;
       const std::size_t skipped_before = skipped.size();
+      // The whole walk first: the images' sidecars are then looked up in its listing.
+      std::vector<std::filesystem::path> images;
       for (auto it = std::filesystem::recursive_directory_iterator(input, error);
            !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+        listed.add(it->path());
         // The non-throwing form: a symbolic link loop is an entry that is no regular file.
         std::error_code entry_error;
         if (it->is_regular_file(entry_error) && is_image_file(it->path())) {
-          add_input_file(found, it->path(), it->path().lexically_relative(input).generic_string(),
-                         settings, asset_settings, skipped);
+          images.push_back(it->path());
         } else if (is_image_file(it->path()) && it->is_symlink(entry_error) &&
                    !it->exists(entry_error)) {
           // An asset moved or renamed under its link: left out, the game would miss it.
@@ -175,6 +179,11 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
+      listed.seal();
+      for (const std::filesystem::path& image : images) {
+        add_input_file(found, image, image.lexically_relative(input).generic_string(), settings,
+                       asset_settings, skipped);
+      }
       // Likely a wrong path (or polygons, which are only read when named): an empty bundle would
       // hide it.
       if (found.empty() && skipped.size() > skipped_before) {
@@ -435,10 +444,10 @@ PreparedInput prepare_polygons(const InputFile& file, const Settings& settings) 
 // Physics properties for one asset: the command line's, overridden field by field by a sidecar
 // file NAME.physics.json beside the input, e.g. {"density": 2, "sensor": true}.
 std::optional<PhysicsProperties> physics_for(const std::filesystem::path& input,
-                                             const Settings& settings) {
+                                             const Settings& settings,
+                                             const AssetSettings& asset_settings) {
   const std::filesystem::path sidecar = physics_sidecar(input);
-  std::error_code error;
-  if (!std::filesystem::exists(sidecar, error)) return settings.physics;
+  if (!asset_settings.exists(sidecar)) return settings.physics;
   PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
   const nlohmann::json json = read_json_object(sidecar, "physics properties");
   apply_physics_json(physics, json, sidecar.string());
@@ -487,7 +496,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.pivot = pivot_of(file, settings);
   asset.transform = input.transform;
   asset.measure = settings.measure;
-  asset.physics = physics_for(file.path, settings);
+  asset.physics = physics_for(file.path, settings, asset_settings);
   asset.tile = file.sheet && !file.frames && settings.grid && settings.grid->tile_snap;
   asset.warnings = std::move(input.warnings);
   asset.stats.traced_vertices = input.traced_vertices;
@@ -695,7 +704,11 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   }
   AssetSettings asset_settings(settings);
   CookResult result;
-  std::vector<InputFile> files = collect_inputs(inputs, settings, asset_settings, result.skipped);
+  auto listed = std::make_shared<ListedFiles>();
+  asset_settings.use_listing(listed);
+  result.listed = listed;
+  std::vector<InputFile> files =
+      collect_inputs(inputs, settings, asset_settings, *listed, result.skipped);
   std::sort(result.skipped.begin(), result.skipped.end());
   for (const InputFile& file : files) {
     if (file.frames &&

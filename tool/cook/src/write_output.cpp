@@ -60,14 +60,14 @@ void check_output_path(const std::filesystem::path& path) {
 void for_each_file_read(const CookResult& result,
                         const std::function<void(const std::filesystem::path&)>& visit) {
   AssetSettings settings_files;
+  settings_files.use_listing(result.listed);
   std::set<std::string> seen;
   for (const CookedAsset& asset : result.assets) {
     // A sheet's cells share their source and its settings files.
     if (!seen.insert(asset.source).second) continue;
     visit(asset.source);
     const std::filesystem::path sidecar = physics_sidecar(asset.source);
-    std::error_code error;
-    if (std::filesystem::exists(sidecar, error)) visit(sidecar);
+    if (settings_files.exists(sidecar)) visit(sidecar);
     for (const std::filesystem::path& file : settings_files.files_for(asset.source)) visit(file);
   }
   for (const std::filesystem::path& image : result.sheet_images) visit(image);

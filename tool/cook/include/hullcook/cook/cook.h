@@ -9,12 +9,15 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace hullcook {
+
+class ListedFiles;  // tool/cook/src/listed_files.h
 
 // A length given either absolutely (in input units: pixels for images) or relative to the
 // radius R of the shape's minimum enclosing circle ("1%").
@@ -112,6 +115,8 @@ struct CookResult {
   // Inputs whose settings say "skip", sorted by path: no assets, but their settings files are
   // read (so dependencies of the output).
   std::vector<std::filesystem::path> skipped;
+  // The names the walk of directory inputs saw, to look sidecars up in.
+  std::shared_ptr<const ListedFiles> listed;
 };
 
 // Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
