@@ -417,6 +417,28 @@ TEST(Bundle, SliversBesideAHullSpanningTheGridAreStoredAtItsStep) {
   expect_round_trip(assets, bundle);
 }
 
+// An exact decomposition of pixel outlines (τ 0, no weld, no simplification) leaves triangles a
+// hundredth of a pixel across among hulls hundreds of pixels long: at the first step and its
+// halves nearest, outward and nudged rounding flatten one of them until the long hulls no longer
+// fit 16-bit deltas. The second pass also tries, at each halved step, the 8 steps up to 1/128
+// finer (other alignments of the grid): this sprite was refused at every one of the first's.
+TEST(Bundle, SpecksOfAnExactDecompositionAreStoredAtAFinerVariantOfAHalvedStep) {
+  Settings settings;
+  settings.tau = Tolerance{0.0, false};
+  settings.weld = 0.0;
+  settings.simplify = 0.0;
+  settings.threads = 1;
+  const CookResult result =
+      cook({fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites/teeworlds__mapres__grass_doodads.png"},
+           settings);
+  std::string bytes;
+  ASSERT_NO_THROW(bytes = write_bundle(result.assets));
+  AlignedBytes aligned(bytes);
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  expect_round_trip(result.assets, bundle);
+}
+
 // From the review of the second pass: a hull whose vertex is too far from the origin for the
 // 32-bit grid at a halved step refused the asset at once, before the second pass could store it
 // at a finer step; listed after the spine, the same hulls were stored. Now in either order.

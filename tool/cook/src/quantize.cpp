@@ -347,28 +347,26 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
       break;
     }
   }
-  // When no step does, the asset starts again with nudged rounding as a third choice and with
-  // steps up to 1/128 finer than the first (still within 16-bit deltas for the widest hull, whose
-  // span sets the first step at 65 000 quanta; each is a different alignment of the grid for a
-  // hull far from the origin), before halving again: a hull thinner than a quantum beside one that
-  // spans nearly the grid (a comb's sliver beside its spine) is then stored at the step the spine
-  // needs. This comes last so that every asset the first pass stores keeps its bytes; a hull too
-  // wide or too far at the first step is beyond it.
+  // When no step does, the asset starts again with nudged rounding as a third choice, at the
+  // first step and each halving of it, each followed by the 8 steps up to 1/128 finer (at the
+  // first, still within 16-bit deltas for the widest hull, whose span sets it at 65 000 quanta;
+  // each is a different alignment of the grid for a hull far from the origin): a hull thinner
+  // than a quantum beside one that spans nearly the grid (a comb's sliver beside its spine) is
+  // then stored at the step the spine needs, and a speck of an exact decomposition at a step
+  // near its size. This comes last so that every asset the first pass stores keeps its bytes; a
+  // hull too wide or too far at the first step is beyond it.
   if (outcome == Attempt::too_coarse || refined) {
     // A tile's step stays a power of two of its half pixel, so that its borders stay on the grid.
-    const int finer_steps = asset.tile ? 0 : 8;
-    step = first_step;
-    for (int attempt = 0; attempt < finer_steps + 24 && step > 0.0f; ++attempt) {
-      const bool finer = attempt <= finer_steps;
-      if (!finer) step *= 0.5f;  // as the first pass halves
-      outcome =
-          store_at(finer ? static_cast<float>(first_step * (1.0 - attempt / 1024.0)) : step, 3);
-      if (outcome == Attempt::ok) return result;
-      // Too wide or too far at the first step, or at a halved one: no later step helps.
-      if ((outcome == Attempt::too_wide || outcome == Attempt::too_far) &&
-          (attempt == 0 || !finer)) {
-        break;
+    const int variants = asset.tile ? 1 : 9;
+    float level = first_step;  // halved as the first pass halves
+    for (int halvings = 0; halvings < 24 && level > 0.0f; ++halvings, level *= 0.5f) {
+      for (int k = 0; k < variants; ++k) {
+        outcome = store_at(k == 0 ? level : static_cast<float>(level * (1.0 - k / 1024.0)), 3);
+        if (outcome == Attempt::ok) return result;
+        // Every later step is finer still: a hull too wide or too far stays so.
+        if (outcome == Attempt::too_wide || outcome == Attempt::too_far) break;
       }
+      if (outcome == Attempt::too_wide || outcome == Attempt::too_far) break;
     }
   }
   if (outcome == Attempt::too_far) bundle_asset_error(asset, refusal.too_far);
