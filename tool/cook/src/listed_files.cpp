@@ -10,7 +10,10 @@ void ListedFiles::add(const std::filesystem::path& entry) {
 }
 
 void ListedFiles::seal() {
-  for (auto& [directory, names] : names_) std::sort(names.begin(), names.end());
+  // Called after each directory input's walk: the earlier walks' names are sorted already.
+  for (auto& [directory, names] : names_) {
+    if (!std::is_sorted(names.begin(), names.end())) std::sort(names.begin(), names.end());
+  }
 }
 
 bool ListedFiles::exists(const std::filesystem::path& path) const {

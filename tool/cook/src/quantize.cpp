@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -94,39 +95,44 @@ struct Refusal {
 // its sides apart may keep it one at the same step.
 enum class Rounding { nearest, outward, nudged };
 
+// The corners of p's grid cell within quantum/√2 of p (nearest rounding's worst move), in the
+// cell's order; the nearest grid point is always one of them.
+struct Corners {
+  std::array<GridPoint, 4> points;
+  int count = 0;
+  const GridPoint* begin() const { return points.data(); }
+  const GridPoint* end() const { return points.data() + count; }
+};
+
+Corners close_corners(Vec2 p, double quantum) {
+  Corners corners;
+  const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double gx = low_x + (corner & 1), gy = low_y + (corner >> 1);
+    const Vec2 moved{gx * quantum - p.x, gy * quantum - p.y};
+    if (glm::dot(moved, moved) <= 0.5 * quantum * quantum) {
+      corners.points[static_cast<std::size_t>(corners.count++)] = {static_cast<std::int64_t>(gx),
+                                                                   static_cast<std::int64_t>(gy)};
+    }
+  }
+  return corners;
+}
+
 // The grid point for p at quantum; centroid only for outward.
 GridPoint round_to_grid(Vec2 p, double quantum, Rounding rounding, Vec2 centroid) {
   if (rounding != Rounding::outward)
     return {static_cast<std::int64_t>(std::nearbyint(p.x / quantum)),
             static_cast<std::int64_t>(std::nearbyint(p.y / quantum))};
-  const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
   GridPoint best = round_to_grid(p, quantum, Rounding::nearest, centroid);
   const Vec2 away = p - centroid;
   double best_reach = glm::dot(Vec2{best.x * quantum, best.y * quantum} - p, away);
-  for (int corner = 0; corner < 4; ++corner) {
-    const double gx = low_x + (corner & 1), gy = low_y + (corner >> 1);
-    const Vec2 moved{gx * quantum - p.x, gy * quantum - p.y};
-    if (glm::dot(moved, moved) > 0.5 * quantum * quantum) continue;
+  for (const GridPoint& corner : close_corners(p, quantum)) {
+    const Vec2 moved{static_cast<double>(corner.x) * quantum - p.x,
+                     static_cast<double>(corner.y) * quantum - p.y};
     const double reach = glm::dot(moved, away);
-    if (reach > best_reach) {
-      best_reach = reach;
-      best = {static_cast<std::int64_t>(gx), static_cast<std::int64_t>(gy)};
-    }
+    if (reach > best_reach) best_reach = reach, best = corner;
   }
   return best;
-}
-
-// The corners of p's grid cell within quantum/√2 of p (nearest rounding's worst move), into
-// corners; the nearest grid point is always one of them.
-void close_corners(Vec2 p, double quantum, std::vector<GridPoint>& corners) {
-  corners.clear();
-  const double low_x = std::floor(p.x / quantum), low_y = std::floor(p.y / quantum);
-  for (int corner = 0; corner < 4; ++corner) {
-    const double gx = low_x + (corner & 1), gy = low_y + (corner >> 1);
-    const Vec2 moved{gx * quantum - p.x, gy * quantum - p.y};
-    if (glm::dot(moved, moved) <= 0.5 * quantum * quantum)
-      corners.push_back({static_cast<std::int64_t>(gx), static_cast<std::int64_t>(gy)});
-  }
 }
 
 // How far apart points are, to compare nudges exactly: a polygon's twice area beats a segment's
@@ -162,7 +168,7 @@ void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& poi
   // steps (a thin arc of 8,000 vertices took 12 s over the second pass's steps).
   constexpr std::size_t kMostVertices = 64;
   if (hull.size() > kMostVertices) return;
-  std::vector<GridPoint> corners, scratch;
+  std::vector<GridPoint> scratch;
   Spread current = spread_of(points, scratch);
   // Two moves make a polygon of points that all rounded to one; a third is spare.
   for (int moves = 0; current.dimension < 2 && moves < 3; ++moves) {
@@ -170,9 +176,8 @@ void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& poi
     std::size_t best_vertex = hull.size();
     GridPoint best_corner;
     for (std::size_t i = 0; i < hull.size(); ++i) {
-      close_corners(hull[i], quantum, corners);
       const GridPoint kept = points[i];
-      for (const GridPoint& corner : corners) {
+      for (const GridPoint& corner : close_corners(hull[i], quantum)) {
         if (corner == kept) continue;
         points[i] = corner;
         const Spread spread = spread_of(points, scratch);
