@@ -3,6 +3,7 @@
 // must now decompose within τ under every measure, into pieces without holes and without slivers.
 #include "cut.h"
 #include "decompose_contract.h"
+#include "hidden_vertices.h"
 #include "hullcook/core/clean.h"
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/geometry.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -256,6 +258,113 @@ TEST(Issue17DenseStress, NotchShallowerThanTheSliverWidthIsLeftWhereOnlySliversR
 // The cut that always exists, on every hole of regions whose holes see little: the trapezoid is
 // convex, holds no hole, and with the rest partitions the region, which has one hole less (the
 // hole joined to ∂P0, or merged with another).
+// A disc whose boundary wobbles (`sides` vertices) holding a grid of hexagonal holes `wall` apart:
+// the holes in the middle are walled in by their neighbours, as in a noise texture's alpha.
+Region walled_in_holes(int sides, int grid, double wall, double scale, double offset,
+                       unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> wobble(-0.4, 0.4);
+  const double pitch = 10.0 + wall, radius = grid * pitch * 0.75 + 8.0;
+  auto place = [&](Vec2 p) { return p * scale + Vec2{offset, -offset}; };
+  Region region;
+  for (int k = 0; k < sides; ++k) {
+    const double angle = 2 * M_PI * k / sides;
+    region.outer.push_back(
+        place((radius + 3.0 * wobble(random)) * Vec2{std::cos(angle), std::sin(angle)}));
+  }
+  for (int i = 0; i < grid; ++i) {
+    for (int j = 0; j < grid; ++j) {
+      const Vec2 center{(i - (grid - 1) / 2.0) * pitch + (j % 2) * pitch / 2,
+                        (j - (grid - 1) / 2.0) * pitch * 0.87};
+      Ring hole = regular(center, 5.0 + wobble(random) * 0.2, 6, wobble(random));
+      for (Vec2& p : hole) p = place(p);
+      region.holes.push_back(hole);
+    }
+  }
+  return region;
+}
+
+// Every vertex of ∂P0 that HiddenVertices proves hidden from a hole's vertex is refused by
+// is_diagonal. Returns {refused by is_diagonal, proved hidden} over every hole vertex.
+std::pair<std::size_t, std::size_t> expect_hidden_vertices_refused(const Region& region,
+                                                                   const std::string& what) {
+  detail::RegionView view(region), brute(region);
+  detail::HiddenVertices hidden(region.outer);
+  std::size_t refused = 0, proved = 0;
+  for (std::size_t h = 0; h < region.holes.size(); ++h) {
+    const int ring = static_cast<int>(h + 1);
+    for (std::size_t p = 0; p < region.holes[h].size(); ++p) {
+      std::vector<signed char> seen(region.outer.size(), -1);
+      hidden.refuse(view, {ring, p}, seen);
+      for (std::size_t i = 0; i < region.outer.size(); ++i) {
+        const bool diagonal = brute.is_diagonal({ring, p}, {0, i});
+        refused += !diagonal;
+        if (seen[i] != 0) continue;
+        ++proved;
+        EXPECT_FALSE(diagonal) << what << ": hole " << h << " vertex " << p << " sees vertex " << i
+                               << " of the boundary";
+      }
+    }
+  }
+  return {refused, proved};
+}
+
+// Issue 17 (tex16.png, 1,177 holes: 1.5 s, most of it full searches from walled-in hole
+// vertices): the vertices of ∂P0 proved hidden a run at a time are each refused by is_diagonal,
+// and for walled-in holes they are most of those it refuses.
+TEST(Issue17NoiseTexture, VerticesProvedHiddenBehindAnEdgeAreNoDiagonals) {
+  struct Case {
+    int sides, grid;
+    double wall, scale, offset;
+  };
+  const Case cases[] = {
+      {400, 7, 0.6, 1.0, 0.0},     // walled in
+      {300, 5, 4.0, 1.0, 0.0},     // wide gaps: many vertices seen
+      {400, 7, 0.05, 1e-3, 1e5},   // tiny, far from the origin
+      {257, 6, 0.3, 1000.0, 0.0},  // large; runs of 16 and one of 1
+  };
+  for (const Case& c : cases) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      const std::string what = std::to_string(c.grid) + "x" + std::to_string(c.grid) + " wall " +
+                               std::to_string(c.wall) + " seed " + std::to_string(seed);
+      const Region region = clean_and_validate(
+          {walled_in_holes(c.sides, c.grid, c.wall, c.scale, c.offset, seed)}, what)[0];
+      const auto [refused, proved] = expect_hidden_vertices_refused(region, what);
+      ASSERT_GT(refused, 0u) << what;
+      // Most refusals are proved so, except where wide gaps let many sight lines through.
+      EXPECT_GT(proved, c.wall < 1.0 ? refused / 2 : 0) << what;
+    }
+  }
+}
+
+// A run of ∂P0 inside an edge's wedge but in front of it is seen: a tooth of the boundary
+// reaching in below a bar-shaped hole, whose lower edge hides the boundary above it.
+TEST(Issue17NoiseTexture, VerticesInFrontOfAnEdgeAreNotProvedHidden) {
+  Region region;
+  // Sides of `steps` vertices, every other one 0.25 inward (the cleaner drops straight ones).
+  auto side = [&](Vec2 from, Vec2 to, int steps) {
+    const Vec2 along = (to - from) / std::hypot(to.x - from.x, to.y - from.y);
+    const Vec2 inward{-along.y, along.x};
+    for (int k = 0; k < steps; ++k) {
+      region.outer.push_back(from + (to - from) * (double(k) / steps) + inward * (k % 2 * 0.25));
+    }
+  };
+  side({-50, -50}, {50, -50}, 32);
+  side({50, -50}, {50, 50}, 32);
+  side({50, 50}, {-50, 50}, 32);
+  side({-50, 50}, {-50, 6}, 16);
+  side({-50, 6}, {0, 6}, 24);  // the tooth, its tip below the bar
+  side({0, 6}, {0, 5}, 1);
+  side({0, 5}, {-50, 5}, 24);
+  side({-50, 5}, {-50, -50}, 16);
+  region.holes = {{{-1, 1}, {1, 1}, {1, -1}, {-1, -1}},         // the hole whose vertices look
+                  {{-20, 11}, {20, 11}, {20, 10}, {-20, 10}}};  // the bar
+  region = clean_and_validate({region}, "tooth")[0];
+  const auto [refused, proved] = expect_hidden_vertices_refused(region, "tooth");
+  EXPECT_GT(proved, 0u);
+  EXPECT_LT(proved, refused);
+}
+
 TEST(Issue16, SlabCutOpensEveryHole) {
   const Region regions[] = {
       clean_and_validate(parse_poly(kDiamonds, "diamonds"), "diamonds")[0],

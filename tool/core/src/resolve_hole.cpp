@@ -1,4 +1,5 @@
 #include "cut.h"
+#include "hidden_vertices.h"
 #include "hullcook/core/geometry.h"
 #include "resolve.h"
 #include "scored_search.h"
@@ -76,8 +77,20 @@ class HoleOpener {
     if (p == info_.joined && info_.closest_ring == 0 && sees(p, info_.closest)) {
       return info_.closest;
     }
+    // A full search returns the nearest vertex p sees, whichever others it leaves out, so it
+    // leaves out those proved hidden (a quick search tests its first few whatever they are).
+    const std::vector<signed char>* known = nullptr;
+    if (quick_tests == 0) {
+      std::vector<signed char>& seen = sees_known_[p];
+      if (seen.empty()) seen.assign(outer_.size(), -1);
+      if (!hidden_) hidden_.emplace(outer_);
+      hidden_->refuse(view_, {hole_ring_, p}, seen);
+      known = &seen;
+    }
     auto each = [&](auto&& visit) {
-      for (std::size_t i = 0; i < outer_.size(); ++i) visit(i);
+      for (std::size_t i = 0; i < outer_.size(); ++i) {
+        if (!known || (*known)[i] != 0) visit(i);
+      }
     };
     thread_local std::vector<ScoredVertex> candidates;
     bool gave_up = false;
@@ -259,6 +272,7 @@ class HoleOpener {
   // and a refused search asks all of them: each is computed once.
   std::vector<std::vector<signed char>> sees_known_;
   std::vector<std::size_t> closest_visible_from_;
+  std::optional<HiddenVertices> hidden_;  // made by the first full search
   std::function<std::optional<std::pair<Region, Region>>()> sliver_fallback_;
 };
 

@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 namespace hullcook::detail {
 
@@ -116,6 +118,26 @@ class RegionView {
       }
     }
     return true;
+  }
+
+  // An edge of the region, but those at u, that meets the segment from u to target (any point),
+  // or none; the search starts at u's end. Builds the grid of edges on first use.
+  std::optional<std::pair<Vec2, Vec2>> edge_across(VertexRef u, Vec2 target) {
+    if (edge_start_.empty()) index_edges();
+    const Vec2 a = at(u);
+    const Sight sight{u,
+                      {-1, 0},
+                      a,
+                      target,
+                      std::min(a.x, target.x),
+                      std::max(a.x, target.x),
+                      std::min(a.y, target.y),
+                      std::max(a.y, target.y)};
+    const std::optional<EdgeRef> edge = grid_blocker(sight);
+    if (!edge) return std::nullopt;
+    const Ring& points = ring(edge->ring);
+    const std::size_t i = edge->index;
+    return std::pair{points[i], points[i + 1 == points.size() ? 0 : i + 1]};
   }
 
   // For views that test many diagonals from a few vertices: caches blockers by direction, and
@@ -289,6 +311,19 @@ class RegionView {
       }
       return true;
     }
+    if (const std::optional<EdgeRef> edge = grid_blocker(sight)) {
+      last_blocker_ = *edge;
+      remember_blocker(a, *edge);
+      return false;
+    }
+    return true;
+  }
+
+  // The indexed search for an edge that blocks the sight line, from a's cells toward b's.
+  std::optional<EdgeRef> grid_blocker(const Sight& sight) const {
+    const Vec2 a = sight.a, b = sight.b;
+    const double min_x = sight.min_x, max_x = sight.max_x;
+    const double min_y = sight.min_y, max_y = sight.max_y;
     // An edge meeting ab at X is stored in X's cell (cells are a monotone function of the
     // coordinates). Each row is scanned over ab's extent in it, widened by half a row and one
     // cell so that rounding cannot leave X's cell out.
@@ -314,15 +349,11 @@ class RegionView {
         const std::size_t cell = static_cast<std::size_t>(y * side_ + x);
         for (int k = edge_start_[cell]; k < edge_start_[cell + 1]; ++k) {
           const EdgeRef edge = edges_[static_cast<std::size_t>(k)];
-          if (blocks(sight, edge.ring, edge.index)) {
-            last_blocker_ = edge;
-            remember_blocker(a, edge);
-            return false;
-          }
+          if (blocks(sight, edge.ring, edge.index)) return edge;
         }
       }
     }
-    return true;
+    return std::nullopt;
   }
 
   // The box of every kEdgesPerChunk consecutive edges of each ring, in ring order: a scan for a
