@@ -19,6 +19,8 @@ constexpr std::size_t kNotSearched = kNone - 2;
 constexpr std::size_t kQuickTests = 16;
 // The widened searches (any vertex of the hole) start from this many of its best-placed vertices.
 constexpr std::size_t kFirstCutsTried = 4;
+// A full search among fewer vertices of ∂P0 tests them all rather than prove some hidden.
+constexpr std::size_t kCandidatesWorthHiding = 64;
 
 // The cuts that open one hole, from the paper's (Eq. 5's antipodal pair joined to ∂P0) to the one
 // that always exists (a slab cut, see cut_across_slab). Each search reuses the sight lines the
@@ -79,8 +81,10 @@ class HoleOpener {
     }
     // A full search returns the nearest vertex p sees, whichever others it leaves out, so it
     // leaves out those proved hidden (a quick search tests its first few whatever they are).
+    // Proving takes the grid of the region's edges, which a search of a few candidates does
+    // without.
     const std::vector<signed char>* known = nullptr;
-    if (quick_tests == 0) {
+    if (quick_tests == 0 && outer_.size() >= kCandidatesWorthHiding) {
       std::vector<signed char>& seen = sees_known_[p];
       if (seen.empty()) seen.assign(outer_.size(), -1);
       if (!hidden_) hidden_.emplace(outer_);
