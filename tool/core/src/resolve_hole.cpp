@@ -79,18 +79,7 @@ class HoleOpener {
     if (p == info_.joined && info_.closest_ring == 0 && sees(p, info_.closest)) {
       return info_.closest;
     }
-    // A full search returns the nearest vertex p sees, whichever others it leaves out, so it
-    // leaves out those proved hidden (a quick search tests its first few whatever they are).
-    // Proving takes the grid of the region's edges, which a search of a few candidates does
-    // without.
-    const std::vector<signed char>* known = nullptr;
-    if (quick_tests == 0 && outer_.size() >= kCandidatesWorthHiding) {
-      std::vector<signed char>& seen = sees_known_[p];
-      if (seen.empty()) seen.assign(outer_.size(), -1);
-      if (!hidden_) hidden_.emplace(outer_);
-      hidden_->refuse(view_, {hole_ring_, p}, seen);
-      known = &seen;
-    }
+    const std::vector<signed char>* const known = hidden_from(p, quick_tests);
     auto each = [&](auto&& visit) {
       for (std::size_t i = 0; i < outer_.size(); ++i) {
         if (!known || (*known)[i] != 0) visit(i);
@@ -104,12 +93,26 @@ class HoleOpener {
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
   }
 
+  // A full search returns the best vertex p sees, whichever others it leaves out, so it leaves
+  // out those proved hidden (a quick search tests its first few whatever they are): p's entries
+  // of sees_known_ with them marked unseen, else null. Proving takes the grid of the region's
+  // edges, which a search of a few candidates does without.
+  const std::vector<signed char>* hidden_from(std::size_t p, std::size_t quick_tests) {
+    if (quick_tests != 0 || outer_.size() < kCandidatesWorthHiding) return nullptr;
+    std::vector<signed char>& seen = sees_known_[p];
+    if (seen.empty()) seen.assign(outer_.size(), -1);
+    if (!hidden_) hidden_.emplace(outer_);
+    hidden_->refuse(view_, {hole_ring_, p}, seen);
+    return &seen;
+  }
+
   // The vertex of ∂P0 but x that q's cut best reaches by Eq. 8 without meeting p-x.
   std::size_t best_second(std::size_t p, std::size_t x, std::size_t q, std::size_t quick_tests) {
     const Eq8 eq8{outer_, e_.outer.vertex, settings_.sc, settings_.sd, hole_[q]};
+    const std::vector<signed char>* const known = hidden_from(q, quick_tests);
     auto each = [&](auto&& visit) {
       for (std::size_t i = 0; i < outer_.size(); ++i) {
-        if (i != x) visit(i);
+        if (i != x && (!known || (*known)[i] != 0)) visit(i);
       }
     };
     thread_local std::vector<ScoredVertex> candidates;
