@@ -6,6 +6,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <webp/encode.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -244,6 +245,47 @@ TEST(TraceFormats, BadImagesGiveAnInputErrorNamingTheFileAndTheProblem) {
   cv::Mat bgr(8, 8, CV_8UC3, cv::Scalar(1, 2, 3));
   write_bytes(dir / "no_alpha.png", encoded(".png", bgr));
   expect_refused(dir / "no_alpha.png", "no alpha channel");
+}
+
+// A lossless WebP's header ends at byte 25, and a small or uniform image's file can end soon
+// after (godot-demo-projects has 28-byte previews, fully transparent): such files were refused
+// as truncated, while every shorter prefix of a WebP still is.
+int append_bytes(const std::uint8_t* data, std::size_t size, const WebPPicture* picture) {
+  static_cast<std::string*>(picture->custom_ptr)->append(reinterpret_cast<const char*>(data), size);
+  return 1;
+}
+
+TEST(TraceFormats, ShortLosslessWebpIsDecodedAndItsPrefixesRefused) {
+  const auto dir = test::scratch_dir("trace_short_webp");
+  // libwebp's simple lossless format (the VP8L chunk alone), packed hardest.
+  WebPConfig config;
+  ASSERT_TRUE(WebPConfigInit(&config));
+  config.lossless = 1, config.method = 6, config.quality = 100;
+  WebPPicture picture;
+  ASSERT_TRUE(WebPPictureInit(&picture));
+  picture.use_argb = 1, picture.width = 64, picture.height = 64;
+  ASSERT_TRUE(WebPPictureAlloc(&picture));
+  std::fill(picture.argb, picture.argb + 64 * 64, 0u);  // fully transparent
+  std::string webp;
+  picture.writer = append_bytes, picture.custom_ptr = &webp;
+  const bool written = WebPEncode(&config, &picture);
+  WebPPictureFree(&picture);
+  ASSERT_TRUE(written);
+  ASSERT_EQ(webp.compare(12, 4, "VP8L"), 0);
+  ASSERT_LT(webp.size(), 30u) << "libwebp wrote a longer file: the test needs another image";
+
+  write_bytes(dir / "clear.webp", webp);
+  const AlphaImage image = load_alpha(dir / "clear.webp", TraceSettings{});
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 64);
+  EXPECT_TRUE(std::all_of(image.alpha.begin(), image.alpha.end(),
+                          [](std::uint8_t alpha) { return alpha == 0; }));
+  for (std::size_t length = 0; length < webp.size(); ++length) {
+    write_bytes(dir / "cut.webp", webp.substr(0, length));
+    expect_refused(dir / "cut.webp", length == 0   ? "empty file"
+                                     : length < 12 ? "not a WebP file"
+                                                   : "truncated WebP");
+  }
 }
 
 TEST(TraceFormats, FullyTransparentImageGivesAWarningAndNoRegion) {

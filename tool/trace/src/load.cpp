@@ -84,14 +84,28 @@ Header read_header(const std::string& bytes, const std::string& name) {
     return {Format::bmp, width, height};
   }
   if (bytes.size() >= 12 && bytes.compare(0, 4, "RIFF") == 0 && bytes.compare(8, 4, "WEBP") == 0) {
-    if (bytes.size() < 30) fail(name, "truncated WebP (the file ends inside the header)");
+    // Each bitstream's header ends at its own offset: a lossless (VP8L) file of a small image
+    // can be 26 bytes in all, the others hold their size up to byte 30.
+    auto header_ends_at = [&](std::size_t end) {
+      if (bytes.size() < end) fail(name, "truncated WebP (the file ends inside the header)");
+    };
+    header_ends_at(16);
+    // libwebp refuses a file shorter than its RIFF size as corrupt: this names the problem.
+    const std::uint64_t declared = read_u32_le(bytes, 4) + 8ull;
+    if (bytes.size() < declared) {
+      fail(name, "truncated WebP (the file ends after " + std::to_string(bytes.size()) +
+                     " of the " + std::to_string(declared) + " bytes its RIFF header declares)");
+    }
     if (bytes.compare(12, 4, "VP8X") == 0) {
+      header_ends_at(30);
       return {Format::webp, read_u24_le(bytes, 24) + 1ull, read_u24_le(bytes, 27) + 1ull};
     }
+    if (bytes.compare(12, 4, "VP8L") == 0) header_ends_at(25);
     if (bytes.compare(12, 4, "VP8L") == 0 && std::uint8_t(bytes[20]) == 0x2f) {
       std::uint32_t bits = read_u32_le(bytes, 21);
       return {Format::webp, (bits & 0x3FFF) + 1ull, ((bits >> 14) & 0x3FFF) + 1ull};
     }
+    if (bytes.compare(12, 4, "VP8 ") == 0) header_ends_at(30);
     if (bytes.compare(12, 4, "VP8 ") == 0 && bytes.compare(23, 3, "\x9d\x01\x2a", 3) == 0) {
       return {Format::webp, read_u16_le(bytes, 26) & 0x3FFFu, read_u16_le(bytes, 28) & 0x3FFFu};
     }
