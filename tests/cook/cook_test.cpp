@@ -345,6 +345,30 @@ TEST(Cook, ShapeBudgetGivesTheFinestLevelWithinIt) {
   EXPECT_GT(cook({sprite}, finer).assets[0].stats.pieces, 4u);
 }
 
+// A budget whose level is coarser than a level of detail leaves that level out, and says so (it
+// was silent: found on ValyriaTear's sheets with --lod 8,2 --max-pieces 6).
+TEST(Cook, ShapeBudgetCoarserThanALevelOfDetailWarnsThatItIsLeftOut) {
+  Settings settings;
+  settings.tau = Tolerance{0.5, false};
+  settings.lods = {Tolerance{1.0, false}, Tolerance{8.0, false}, Tolerance{1000.0, false}};
+  settings.max_pieces = 4;
+  settings.max_verts = 0;
+  auto sprite = kSprites / "pingus__groundpieces__ground__foliage__oak1.png";
+  const CookedAsset asset = cook({sprite}, settings).assets.at(0);
+  ASSERT_GT(asset.tau, 8.0);
+  ASSERT_LT(asset.tau, 1000.0);
+  ASSERT_EQ(asset.levels.size(), 2u);  // the budget's and τ 1000
+  EXPECT_DOUBLE_EQ(asset.levels[1].tau, 1000.0);
+  ASSERT_EQ(asset.warnings.size(), 1u);
+  EXPECT_NE(asset.warnings[0].find("--max-pieces 4: the budget's level"), std::string::npos);
+  EXPECT_NE(asset.warnings[0].find("the levels of detail at τ 1, 8, which are left out"),
+            std::string::npos)
+      << asset.warnings[0];
+  // Within the budget at τ 0.5 already: nothing to say.
+  settings.max_pieces = 1000;
+  EXPECT_TRUE(cook({sprite}, settings).assets.at(0).warnings.empty());
+}
+
 // Over many regions the budget is the whole asset's: the smallest of every tree's levels whose
 // pieces fit (found by a binary search since a scan over the candidates took 52 s on the
 // synthetic set's blobs at tau 0), and each region at least one piece.
@@ -362,6 +386,13 @@ TEST(Cook, ShapeBudgetOverManyRegionsIsTheFinestLevelWithinIt) {
     settings.max_pieces = budget;
     const CookedAsset within = cook({sprite}, settings).assets.at(0);
     EXPECT_LE(within.stats.pieces, std::max(budget, regions)) << budget;
+    // A budget below the regions' count cannot be kept, and says so (it was silent).
+    const bool warned = std::any_of(
+        within.warnings.begin(), within.warnings.end(), [&](const std::string& warning) {
+          return warning.find("--max-pieces " + std::to_string(budget) + " cannot be kept: its " +
+                              std::to_string(regions) + " regions") != std::string::npos;
+        });
+    EXPECT_EQ(warned, budget < regions) << budget;
     if (budget <= regions) {
       EXPECT_EQ(within.stats.pieces, regions) << budget;
       continue;

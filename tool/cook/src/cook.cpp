@@ -3,6 +3,7 @@
 #include "hullcook/cook/cook.h"
 
 #include "asset_settings.h"
+#include "contract_text.h"
 #include "grid.h"
 #include "hullcook/cook/constrain.h"
 #include "hullcook/cook/contract.h"
@@ -546,7 +547,31 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   std::optional<AssetDecomposer> decomposer(std::in_place, regions, decompose_settings, threads);
   if (settings.max_pieces > 0) {
     double budget_tau = decomposer->tau_for_budget(level_taus.front(), settings.max_pieces);
+    // Each region is one piece at least: a budget below their count cannot be kept, which the
+    // user learns here rather than from the bundle.
+    const std::size_t budget_pieces = decomposer->piece_count_at(budget_tau);
+    if (budget_pieces > settings.max_pieces) {
+      asset.warnings.push_back("--max-pieces " + std::to_string(settings.max_pieces) +
+                               " cannot be kept: its " + std::to_string(regions.size()) +
+                               " regions are one piece each at least, so it keeps " +
+                               std::to_string(budget_pieces) + " pieces (τ " +
+                               detail::number(budget_tau) + " output units, the coarsest level)");
+    }
     if (budget_tau > level_taus.front()) {
+      std::string dropped;
+      std::size_t dropped_count = 0;
+      for (std::size_t l = 1; l < level_taus.size() && level_taus[l] < budget_tau; ++l) {
+        dropped += (dropped.empty() ? "" : ", ") + detail::number(level_taus[l]);
+        ++dropped_count;
+      }
+      if (dropped_count > 0) {
+        asset.warnings.push_back(
+            "--max-pieces " + std::to_string(settings.max_pieces) + ": the budget's level (τ " +
+            detail::number(budget_tau) + " output units) is coarser than " +
+            (dropped_count == 1 ? "the level of detail at τ " + dropped + ", which is"
+                                : "the levels of detail at τ " + dropped + ", which are") +
+            " left out");
+      }
       std::erase_if(level_taus, [&](double t) { return t < budget_tau; });
       if (level_taus.empty() || level_taus.front() != budget_tau) {
         level_taus.insert(level_taus.begin(), budget_tau);
