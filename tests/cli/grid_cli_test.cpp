@@ -118,6 +118,25 @@ TEST_F(GridCli, GridsThatCutNothingAreRefused) {
   auto empty = run_hullcook("cook " + (directory / "empty.png").string() + " --grid 8" + out);
   EXPECT_EQ(empty.exit_code, static_cast<int>(ExitCode::bad_input)) << empty.output;
   EXPECT_NE(empty.output.find("every cell of the grid is empty"), std::string::npos);
+  // Among sheets that give assets, an empty one is a warning (a folder of tilesets was stopped
+  // by a transparent overlay in it): the others are cooked as alone.
+  std::ofstream(directory / "art/tiles/empty.png", std::ios::binary)
+      << test::make_png(kWidth, kHeight, 6, std::vector<std::uint8_t>(kWidth * kHeight * 4, 0));
+  auto among = run_hullcook("cook " + (directory / "art").string() +
+                            " --grid 8 --margin 1 --spacing 2" + out);
+  ASSERT_EQ(among.exit_code, 0) << among.output;
+  EXPECT_NE(among.output.find("hullcook: warning: " + (directory / "art/tiles/empty.png").string() +
+                              ": every cell of the grid is empty (--grid, --alpha): the sheet "
+                              "gives no asset"),
+            std::string::npos)
+      << among.output;
+  fs::remove(directory / "art/tiles/empty.png");
+  auto alone =
+      run_hullcook("cook " + (directory / "art").string() + " --grid 8 --margin 1 --spacing 2 -o " +
+                   (directory / "alone.hcb").string());
+  ASSERT_EQ(alone.exit_code, 0) << alone.output;
+  EXPECT_EQ(read_bytes(directory / "out.hcb"), read_bytes(directory / "alone.hcb"));
+  fs::remove(directory / "out.hcb");
   EXPECT_EQ(run_hullcook("cook " + sheet + " --margin 1" + out).exit_code,
             static_cast<int>(ExitCode::usage));
   EXPECT_EQ(run_hullcook("cook " + sheet + " --grid 8x" + out).exit_code,

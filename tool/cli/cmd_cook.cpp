@@ -61,6 +61,9 @@ void print_warnings(const CookResult& result) {
       std::fprintf(stderr, "hullcook: warning: %s: %s\n", asset.source.c_str(), warning.c_str());
     }
   }
+  for (const std::string& warning : result.warnings) {
+    std::fprintf(stderr, "hullcook: warning: %s\n", warning.c_str());
+  }
   // Skipping is asked for, image by image: said only when it leaves the output empty.
   if (result.assets.empty() && !result.skipped.empty()) {
     std::fprintf(stderr,

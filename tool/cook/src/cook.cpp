@@ -655,8 +655,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   return asset;
 }
 
-// A grid's empty cells are no assets; a sheet whose every cell is empty is refused, as a
-// directory without images is: a wrong --grid or --alpha, most likely.
+// A grid's empty cells are no assets. A sheet whose every cell is empty is refused when no input
+// gave an asset, as a directory without images is (a wrong --grid or --alpha, most likely), and
+// is a warning among sheets that did: a folder of tilesets may hold an overlay left transparent
+// (Wesnoth's terrain grid.png), which is no reason to stop its cook.
 void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
   std::vector<CookedAsset> kept;
   std::vector<std::size_t> kept_index;
@@ -673,9 +675,10 @@ void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
     }
   }
   for (const auto& [sheet, has_cells] : sheet_has_cells) {
-    if (!has_cells) {
-      throw InputError(sheet + ": every cell of the grid is empty (--grid, --alpha)");
-    }
+    if (has_cells) continue;
+    const std::string problem = sheet + ": every cell of the grid is empty (--grid, --alpha)";
+    if (kept.empty()) throw InputError(problem);
+    result.warnings.push_back(problem + ": the sheet gives no asset");
   }
   result.assets = std::move(kept);
   result.cooked_index = std::move(kept_index);

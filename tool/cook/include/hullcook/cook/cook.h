@@ -117,6 +117,9 @@ struct CookResult {
   std::vector<std::filesystem::path> skipped;
   // The names the walk of directory inputs saw, to look sidecars up in.
   std::shared_ptr<const ListedFiles> listed;
+  // About inputs that gave no asset, each "PATH: what": a sheet whose every --grid cell is
+  // empty, among inputs that gave assets.
+  std::vector<std::string> warnings;
 };
 
 // Called once per asset as soon as it is cooked and checked, on the thread that cooked it (so
