@@ -105,6 +105,44 @@ TEST_F(GridCli, ASheetsFragmentLinksToTheBytesOfOneCook) {
   EXPECT_EQ(read_bytes(directory / "linked.hcb"), read_bytes(directory / "one.hcb"));
 }
 
+// A cell's warnings and errors name the cell's asset beside the sheet: their points are the
+// cell's (ValyriaTear's and Shattered Pixel Dungeon's tilesets, whose messages named the sheet
+// alone).
+TEST_F(GridCli, MessagesAboutACellNameItsAsset) {
+  // Two 8 x 8 cells: two 3 x 3 blobs in cell 0, one in cell 1.
+  std::vector<std::uint8_t> pixels(16 * 8 * 4, 0);
+  auto blob = [&](int left, int top) {
+    for (int y = top; y < top + 3; ++y) {
+      for (int x = left; x < left + 3; ++x) pixels[(y * 16 + x) * 4 + 3] = 255;
+    }
+  };
+  blob(0, 0), blob(4, 4), blob(10, 2);
+  const fs::path sheet = directory / "two.png";
+  std::ofstream(sheet, std::ios::binary) << test::make_png(16, 8, 6, pixels);
+  auto cooked = run_hullcook("cook " + sheet.string() + " --grid 8 --max-pieces 1 -q -o " +
+                             (directory / "two.hcb").string());
+  ASSERT_EQ(cooked.exit_code, 0) << cooked.output;
+  EXPECT_NE(cooked.output.find("hullcook: warning: " + sheet.string() +
+                               " (asset two.png/0): --max-pieces 1 cannot be kept"),
+            std::string::npos)
+      << cooked.output;
+  EXPECT_EQ(cooked.output.find("two.png/1"), std::string::npos) << cooked.output;
+  // An error: a staircase line 2 px wide in cell 1 of another sheet, under a weld of 3 px.
+  std::vector<std::uint8_t> line(32 * 16 * 4, 0);
+  for (int i = 0; i < 14; ++i) {
+    line[(i * 32 + 16 + i) * 4 + 3] = 255, line[(i * 32 + 17 + i) * 4 + 3] = 255;
+  }
+  const fs::path lines = directory / "line.png";
+  std::ofstream(lines, std::ios::binary) << test::make_png(32, 16, 6, line);
+  auto refused = run_hullcook("cook " + lines.string() + " --grid 16 --weld 3 --tau 0.2 -q -o " +
+                              (directory / "line.hcb").string());
+  EXPECT_EQ(refused.exit_code, static_cast<int>(ExitCode::bad_input)) << refused.output;
+  EXPECT_NE(
+      refused.output.find("hullcook: error: " + lines.string() + " (asset line.png/1): a piece of"),
+      std::string::npos)
+      << refused.output;
+}
+
 TEST_F(GridCli, GridsThatCutNothingAreRefused) {
   const std::string sheet = (directory / "art/tiles/sheet.png").string();
   const std::string out = " -o " + (directory / "out.hcb").string();

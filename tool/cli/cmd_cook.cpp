@@ -58,7 +58,8 @@ void print_summary(const CookResult& result) {
 void print_warnings(const CookResult& result) {
   for (const CookedAsset& asset : result.assets) {
     for (const std::string& warning : asset.warnings) {
-      std::fprintf(stderr, "hullcook: warning: %s: %s\n", asset.source.c_str(), warning.c_str());
+      std::fprintf(stderr, "hullcook: warning: %s: %s\n", described(asset).c_str(),
+                   warning.c_str());
     }
   }
   for (const std::string& warning : result.warnings) {

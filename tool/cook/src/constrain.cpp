@@ -401,7 +401,7 @@ class Constrainer {
     message << " is thinner than the weld distance " << limits_.weld
             << " and can be neither merged into a neighbour nor given an engine-ready hull "
                "within tau = "
-            << tau_ << "; lower --weld, or raise --tau or lower --ppu";
+            << tau_ << " output units; lower --weld, or raise --tau or lower --ppu";
     throw InputError(message.str());
   }
 

@@ -499,6 +499,8 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.measure = settings.measure;
   asset.physics = physics_for(file.path, settings, asset_settings);
   asset.tile = file.sheet && !file.frames && settings.grid && settings.grid->tile_snap;
+  asset.part_of_source = file.sheet != nullptr;
+  const std::string where = described(asset);
   asset.warnings = std::move(input.warnings);
   asset.stats.traced_vertices = input.traced_vertices;
   asset.stats.decode_ms = input.decode_ms;
@@ -508,12 +510,12 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   for (Region& region : prepared) transform_in_place(region, input.transform);
   // A fully transparent image is a warning (from the tracer) and an empty asset, not an error.
   if (!prepared.empty()) {
-    refuse_tiny_rings(prepared, asset.source);
-    prepared = clean_and_validate(std::move(prepared), asset.source, threads);
+    refuse_tiny_rings(prepared, where);
+    prepared = clean_and_validate(std::move(prepared), where, threads);
   }
-  refuse_huge_coordinates(prepared, asset.source);
-  refuse_sliver_regions(prepared, asset.source, 1, threads);
-  refuse_too_many_holes(prepared, asset.source, asset.image_width > 0);
+  refuse_huge_coordinates(prepared, where);
+  refuse_sliver_regions(prepared, where, 1, threads);
+  refuse_too_many_holes(prepared, where, asset.image_width > 0);
   // The asset keeps the outline; the cook reads it there (one copy of it, not two).
   asset.regions = std::move(prepared);
   const std::vector<Region>& regions = asset.regions;
@@ -631,7 +633,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
     }
     std::vector<CookedPiece> constrained =
         apply_engine_limits(to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split,
-                            asset.source, threads, merge_width);
+                            where, threads, merge_width);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {
@@ -648,7 +650,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
     if (asset.levels.empty()) asset.pieces = std::move(constrained);
     asset.levels.push_back(std::move(level));
   }
-  enforce_contract(asset.source, violations);
+  enforce_contract(where, violations);
   asset.stats.hulls = asset.levels.empty() ? 0 : asset.levels.front().hulls.size();
   if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
   asset.stats.total_ms = milliseconds_since(start);

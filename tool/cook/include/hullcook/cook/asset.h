@@ -98,8 +98,16 @@ struct CookedAsset {
   // A --tile cell: the bundle quantizes it on a grid of half pixels divided by a power of two,
   // so that its cell's borders (hulls snapped onto them) are stored exactly.
   bool tile = false;
+  // A --grid cell or a sheet's frame: one of the assets of source, which messages name too.
+  bool part_of_source = false;
   std::vector<std::string> warnings;
   CookedStats stats;
 };
+
+// The asset as errors and warnings name it: its source, and for a --grid cell or a sheet's frame
+// also its name ("tiles.png (asset tiles.png/12)"), since points in a message are the cell's.
+inline std::string described(const CookedAsset& asset) {
+  return asset.part_of_source ? asset.source + " (asset " + asset.name + ")" : asset.source;
+}
 
 }  // namespace hullcook
