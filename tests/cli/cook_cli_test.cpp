@@ -307,6 +307,34 @@ TEST_F(CookCli, ReviewAPolygonWithTooManyHolesIsRefusedByDecomposeToo) {
   expect_bad_input(input, "6400 holes");
 }
 
+// An image traced by a colour key has no alpha channel to blame: its messages speak of the key
+// (OpenTTD's OpenGFX sheets with --color-key #0000ff were told 'is the alpha channel noisy?').
+TEST_F(CookCli, MessagesAboutAColourKeyedImageSpeakOfTheKey) {
+  // RGB, 400 x 400 px: grey with 3 x 3 px squares of the key every 5 px (6,400 holes).
+  constexpr int kSide = 400;
+  std::vector<std::uint8_t> pixels(kSide * kSide * 3, 128);
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      if (x % 5 >= 1 && x % 5 <= 3 && y % 5 >= 1 && y % 5 <= 3) {
+        pixels[(y * kSide + x) * 3 + 2] = 255;  // #8080ff
+      }
+    }
+  }
+  fs::path holes = write("keyed.png", test::make_png(kSide, kSide, 2, pixels));
+  expect_bad_input(holes, "do many specks of the image have the colour key?",
+                   "--color-key '#8080ff'");
+  fs::remove(holes);
+  fs::path keyed =
+      write("all_key.png", test::make_png(8, 8, 2, std::vector<std::uint8_t>(8 * 8 * 3, 128)));
+  auto result = run_hullcook("cook " + keyed.string() + " --color-key '#808080' -q -o " +
+                             (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("fully transparent (every pixel is the colour key, or has alpha "
+                               "below 128): no region traced"),
+            std::string::npos)
+      << result.output;
+}
+
 TEST_F(CookCli, ReviewHugeCoordinatesAreBadInput) {
   // Cooked to a NaN area, the triangle was left out with a warning and the cook succeeded.
   expect_bad_input(write("huge.poly", "1\n3 out\n0 0\n1e300 0\n0 1e300\n1 2 3\n"), "too large");

@@ -60,7 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     regions = parse_poly(text, "fuzz.poly");
     refuse_tiny_rings(regions, "fuzz.poly");
     regions = clean_and_validate(std::move(regions), "fuzz.poly");
-    refuse_too_many_holes(regions, "fuzz.poly", false);
+    refuse_too_many_holes(regions, "fuzz.poly", TracedFrom::polygons);
     for (std::size_t r = 0; r < regions.size(); ++r) {
       refuse_sliver_regions({regions[r]}, "fuzz.poly", r + 1);
     }

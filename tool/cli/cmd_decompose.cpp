@@ -44,7 +44,7 @@ int run_decompose(const DecomposeOptions& options) {
   // prepared heap (the first decomposition in a process would otherwise pay its page faults).
   prepare_process_heap();
   const std::vector<Region> regions = read_poly_file(options.input);
-  refuse_too_many_holes(regions, options.input, false);
+  refuse_too_many_holes(regions, options.input, TracedFrom::polygons);
   // Each region's pieces are checked against that region alone (below).
   for (std::size_t r = 0; r < regions.size(); ++r) {
     refuse_sliver_regions({regions[r]}, options.input, r + 1);

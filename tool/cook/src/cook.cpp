@@ -515,7 +515,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   }
   refuse_huge_coordinates(prepared, where);
   refuse_sliver_regions(prepared, where, 1, threads);
-  refuse_too_many_holes(prepared, where, asset.image_width > 0);
+  refuse_too_many_holes(prepared, where,
+                        asset.image_width == 0 ? TracedFrom::polygons
+                        : settings.color_key   ? TracedFrom::color_key
+                                               : TracedFrom::alpha);
   // The asset keeps the outline; the cook reads it there (one copy of it, not two).
   asset.regions = std::move(prepared);
   const std::vector<Region>& regions = asset.regions;
@@ -698,7 +701,7 @@ void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
 constexpr double kMaxHolesTimesVertices = 5e7;
 
 void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
-                           bool traced) {
+                           TracedFrom traced) {
   for (std::size_t r = 0; r < regions.size(); ++r) {
     std::size_t vertices = regions[r].outer.size();
     for (const Ring& hole : regions[r].holes) vertices += hole.size();
@@ -709,9 +712,13 @@ void refuse_too_many_holes(const std::vector<Region>& regions, const std::string
     throw InputError(source + ": region " + std::to_string(r + 1) + " has " +
                      std::to_string(holes) + " holes among " + std::to_string(vertices) +
                      " vertices, too many to decompose (holes x vertices must be at most 5e7)" +
-                     (traced ? "; is the alpha channel noisy? Raise --min-hole-area (smaller "
-                               "holes are filled) or --alpha"
-                             : ""));
+                     (traced == TracedFrom::alpha
+                          ? "; is the alpha channel noisy? Raise --min-hole-area (smaller holes "
+                            "are filled) or --alpha"
+                      : traced == TracedFrom::color_key
+                          ? "; do many specks of the image have the colour key? Raise "
+                            "--min-hole-area (smaller holes are filled), or give another key"
+                          : ""));
   }
 }
 

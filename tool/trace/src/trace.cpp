@@ -307,8 +307,13 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
 
   std::vector<Ring> rings = march(image, threshold, settings.threads);
   if (rings.empty()) {
-    result.warnings.push_back("fully transparent (no pixel with alpha >= " +
-                              std::to_string(threshold) + "): no region traced");
+    // With a colour key, the alpha traced is 0 at the key and the image's own elsewhere.
+    result.warnings.push_back(
+        settings.color_key
+            ? "fully transparent (every pixel is the colour key, or has alpha below " +
+                  std::to_string(threshold) + "): no region traced"
+            : "fully transparent (no pixel with alpha >= " + std::to_string(threshold) +
+                  "): no region traced");
     result.trace_ms = milliseconds_since(start);
     return result;
   }

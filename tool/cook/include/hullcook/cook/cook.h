@@ -141,9 +141,11 @@ void check_output_path(const std::filesystem::path& path);
 
 // Throws InputError naming source and the region if a region has too many holes for its
 // vertices to decompose in reasonable time and memory (holes x vertices above 5e7; see cook.cpp),
-// with a hint about the alpha channel when traced.
+// with a hint about what to change: for an image traced from its alpha channel or by a colour
+// key (keyed), the alpha channel's or the key's noise.
+enum class TracedFrom { polygons, alpha, color_key };
 void refuse_too_many_holes(const std::vector<Region>& regions, const std::string& source,
-                           bool traced);
+                           TracedFrom traced);
 
 // The physics sidecar of an input image: NAME.physics.json beside NAME.png.
 std::filesystem::path physics_sidecar(const std::filesystem::path& input);
