@@ -1,6 +1,7 @@
 // PNG through libpng, giving what OpenCV 4.6's imdecode(IMREAD_UNCHANGED) gave (the same libpng
-// transforms, then 16-bit samples to 8 as convertTo(CV_8U, 1/257) rounds), and reading straight
-// into the alpha plane when that is all the tracer needs.
+// transforms, then 16-bit samples to 8 as convertTo(CV_8U, 1/257) rounds) but for grey with tRNS,
+// whose transparent value is read as alpha; and reading straight into the alpha plane when that
+// is all the tracer needs.
 #include "pixel_sink.h"
 
 #include <png.h>
@@ -153,13 +154,17 @@ void decode_png(const std::string& bytes, PixelSink& sink) {
                  nullptr);
     png_get_tRNS(png, info, &transparent_alpha, &transparent_count, &transparent_colour);
   });
-  // OpenCV's channels: grey (even with tRNS) 1; RGB and palette 3, or 4 with tRNS; with an alpha
-  // sample 4.
+  // OpenCV's channels: RGB and palette 3, or 4 with tRNS; with an alpha sample 4; grey 1. Grey
+  // with tRNS is 4 here (OpenCV reads it as 1 channel, as if opaque, which refused such sprites
+  // as having no alpha channel), expanded as RGB with tRNS is.
   Layout layout;
   switch (colour_type) {
     case PNG_COLOR_TYPE_RGB:
     case PNG_COLOR_TYPE_PALETTE:
-      layout = transparent_count > 0 ? Layout{4, true} : Layout{3, false};
+    case PNG_COLOR_TYPE_GRAY:
+      layout = transparent_count > 0                ? Layout{4, true}
+               : colour_type == PNG_COLOR_TYPE_GRAY ? Layout{1, false}
+                                                    : Layout{3, false};
       break;
     case PNG_COLOR_TYPE_GRAY_ALPHA:
     case PNG_COLOR_TYPE_RGB_ALPHA:
