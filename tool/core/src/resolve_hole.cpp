@@ -101,8 +101,15 @@ class HoleOpener {
     if (quick_tests != 0 || outer_.size() < kCandidatesWorthHiding) return nullptr;
     std::vector<signed char>& seen = sees_known_[p];
     if (seen.empty()) seen.assign(outer_.size(), -1);
-    if (!hidden_) hidden_.emplace(outer_);
-    hidden_->refuse(view_, {hole_ring_, p}, seen);
+    if (!hidden_) {
+      hidden_.emplace(outer_);
+      hidden_proved_.assign(hole_.size(), 0);
+    }
+    // Once per vertex: a second proof would try again the runs the first could not prove.
+    if (!hidden_proved_[p]) {
+      hidden_->refuse(view_, {hole_ring_, p}, seen);
+      hidden_proved_[p] = 1;
+    }
     return &seen;
   }
 
@@ -280,6 +287,7 @@ class HoleOpener {
   std::vector<std::vector<signed char>> sees_known_;
   std::vector<std::size_t> closest_visible_from_;
   std::optional<HiddenVertices> hidden_;  // made by the first full search
+  std::vector<char> hidden_proved_;       // per vertex of the hole: its hidden vertices marked
   std::function<std::optional<std::pair<Region, Region>>()> sliver_fallback_;
 };
 
