@@ -352,6 +352,38 @@ DrawnImage soft_edges(Random& random, std::uint64_t seed) {
   return std::move(canvas).image(ImageFamily::soft_edges, seed, description.str());
 }
 
+// Value noise on a lattice of `cell` px (bilinear between random lattice values): a disc whose
+// rim sinks where the noise is high, with holes inside where it is below the density.
+DrawnImage noise_disc(Random& random, std::uint64_t seed) {
+  const int width = random.integer(60, 220), height = random.integer(60, 220);
+  const int cell = random.integer(2, 6);
+  const double density = random.uniform(0.3, 0.5);
+  const int columns = width / cell + 2, rows = height / cell + 2;
+  std::vector<double> lattice(static_cast<std::size_t>(columns) * rows);
+  for (double& value : lattice) value = random.uniform();
+  auto noise = [&](int x, int y) {
+    const double gx = double(x) / cell, gy = double(y) / cell;
+    const int i = static_cast<int>(gx), j = static_cast<int>(gy);
+    const double fx = gx - i, fy = gy - j;
+    auto at = [&](int a, int b) { return lattice[static_cast<std::size_t>(b) * columns + a]; };
+    return at(i, j) * (1 - fx) * (1 - fy) + at(i + 1, j) * fx * (1 - fy) +
+           at(i, j + 1) * (1 - fx) * fy + at(i + 1, j + 1) * fx * fy;
+  };
+  Canvas canvas(width, height);
+  const double cx = width / 2.0, cy = height / 2.0, radius = std::min(width, height) / 2.0 - 2;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double value = noise(x, y), r = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+      if (r > radius - 6 * value) continue;
+      canvas.set(x, y, value < density && r < radius - 8 ? kClear : kOpaque);
+    }
+  }
+  std::ostringstream description;
+  description << width << "x" << height << " px, noise cells of " << cell << " px, holes below "
+              << density;
+  return std::move(canvas).image(ImageFamily::noise_disc, seed, description.str());
+}
+
 }  // namespace
 
 std::size_t images_to_draw(ImageFamily family, std::size_t wanted) {
@@ -365,7 +397,7 @@ const std::vector<ImageFamily>& all_image_families() {
   static const std::vector<ImageFamily> families{
       ImageFamily::tileset,         ImageFamily::frame,      ImageFamily::button,
       ImageFamily::one_pixel_walls, ImageFamily::grid_sheet, ImageFamily::mosaic,
-      ImageFamily::soft_edges};
+      ImageFamily::soft_edges,      ImageFamily::noise_disc};
   return families;
 }
 
@@ -385,6 +417,8 @@ const char* image_family_name(ImageFamily family) {
       return "mosaic";
     case ImageFamily::soft_edges:
       return "soft_edges";
+    case ImageFamily::noise_disc:
+      return "noise_disc";
   }
   return "?";
 }
@@ -413,6 +447,8 @@ DrawnImage draw_image(ImageFamily family, std::uint64_t seed) {
       return mosaic(random, seed);
     case ImageFamily::soft_edges:
       return soft_edges(random, seed);
+    case ImageFamily::noise_disc:
+      return noise_disc(random, seed);
   }
   return grid_sheet(seed);
 }

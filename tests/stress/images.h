@@ -23,6 +23,9 @@ enum class ImageFamily {
                     // image large enough that its tracing takes the cook's threads (issue 17)
   soft_edges,       // rippled radial falloffs of alpha, often cut by the image's border, where
                     // an edge traced at a low threshold runs a hundredth of a pixel from straight
+  noise_disc,       // a disc of value noise whose rim wobbles, holed where the noise is low: holes
+                    // walled in by others, whose vertices see no vertex of the rim (issue 17's
+                    // noise texture, tex16.png)
 };
 
 // How many of a family's images a run of `wanted` per family draws: one grid sheet (every seed

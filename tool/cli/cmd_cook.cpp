@@ -65,6 +65,16 @@ void print_warnings(const CookResult& result) {
   for (const std::string& warning : result.warnings) {
     std::fprintf(stderr, "hullcook: warning: %s\n", warning.c_str());
   }
+  // Once for the cook: with --lod and --max-pieces, most assets of a folder may leave some out.
+  const std::size_t short_of_lods =
+      std::count_if(result.assets.begin(), result.assets.end(),
+                    [](const CookedAsset& asset) { return asset.lods_left_out > 0; });
+  if (short_of_lods > 0) {
+    std::fprintf(stderr,
+                 "hullcook: warning: %zu of %zu assets leave out --lod levels finer than their "
+                 "--max-pieces level (the report's \"levels\" counts each asset's)\n",
+                 short_of_lods, result.assets.size());
+  }
   // Skipping is asked for, image by image: said only when it leaves the output empty.
   if (result.assets.empty() && !result.skipped.empty()) {
     std::fprintf(stderr,

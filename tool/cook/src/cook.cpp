@@ -563,20 +563,10 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
                                detail::number(budget_tau) + " output units, the coarsest level)");
     }
     if (budget_tau > level_taus.front()) {
-      std::string dropped;
-      std::size_t dropped_count = 0;
-      for (std::size_t l = 1; l < level_taus.size() && level_taus[l] < budget_tau; ++l) {
-        dropped += (dropped.empty() ? "" : ", ") + detail::number(level_taus[l]);
-        ++dropped_count;
-      }
-      if (dropped_count > 0) {
-        asset.warnings.push_back(
-            "--max-pieces " + std::to_string(settings.max_pieces) + ": the budget's level (τ " +
-            detail::number(budget_tau) + " output units) is coarser than " +
-            (dropped_count == 1 ? "the level of detail at τ " + dropped + ", which is"
-                                : "the levels of detail at τ " + dropped + ", which are") +
-            " left out");
-      }
+      // Said once for the cook (print_warnings): with --lod, most assets of a folder may drop
+      // some.
+      asset.lods_left_out = static_cast<std::size_t>(std::count_if(
+          level_taus.begin() + 1, level_taus.end(), [&](double t) { return t < budget_tau; }));
       std::erase_if(level_taus, [&](double t) { return t < budget_tau; });
       if (level_taus.empty() || level_taus.front() != budget_tau) {
         level_taus.insert(level_taus.begin(), budget_tau);

@@ -100,6 +100,8 @@ struct CookedAsset {
   bool tile = false;
   // A --grid cell or a sheet's frame: one of the assets of source, which messages name too.
   bool part_of_source = false;
+  // --lod levels finer than --max-pieces' level, which the asset does not have.
+  std::size_t lods_left_out = 0;
   std::vector<std::string> warnings;
   CookedStats stats;
 };
