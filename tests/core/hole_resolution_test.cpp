@@ -1,6 +1,7 @@
 // Issue 16: every hole is resolved, whatever its shape and its neighbours. The polygons here
 // defeated the antipodal-pair cuts to ∂P0 (a node was kept whole with its holes, at any τ); each
 // must now decompose within τ under every measure, into pieces without holes and without slivers.
+#include "boundary_grid.h"
 #include "cut.h"
 #include "decompose_contract.h"
 #include "hidden_vertices.h"
@@ -8,6 +9,7 @@
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
+#include "scored_search.h"
 
 #include <gtest/gtest.h>
 
@@ -363,6 +365,125 @@ TEST(Issue17NoiseTexture, VerticesInFrontOfAnEdgeAreNotProvedHidden) {
   const auto [refused, proved] = expect_hidden_vertices_refused(region, "tooth");
   EXPECT_GT(proved, 0u);
   EXPECT_LT(proved, refused);
+}
+
+// box_behind tests each side of the edge's wedge at the box's least corner only: it must decide
+// as the test of every corner does, on a small grid where points on the lines (orientation 0),
+// flat boxes and edges through `from` are common, and on the same shapes tiny and far out.
+TEST(Issue17NoiseTexture, BoxBehindAnEdgeDecidesAsItsFourCornersDo) {
+  using Box = detail::HiddenVertices::Box;
+  auto corners_behind = [](Vec2 from, Vec2 c, Vec2 d, const Box& box) {
+    const int side = orientation(c, d, from);
+    if (side == 0) return false;
+    for (Vec2 corner :
+         {box.low, box.high, Vec2{box.low.x, box.high.y}, Vec2{box.high.x, box.low.y}}) {
+      if (orientation(c, d, corner) != -side || orientation(from, c, corner) != side ||
+          orientation(from, d, corner) != -side) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::mt19937 random(20261206);
+  std::uniform_int_distribution<int> coordinate(-6, 6);
+  std::size_t behind = 0;
+  for (const auto& [scale, offset] : {std::pair{1.0, 0.0}, {1e-3, 1e5}, {1e4, -3e7}}) {
+    auto point = [&] {
+      return Vec2{offset + scale * coordinate(random), offset + scale * coordinate(random)};
+    };
+    for (int trial = 0; trial < 40000; ++trial) {
+      const Vec2 from = point(), c = point(), d = point(), u = point(), v = point();
+      const Box box{{std::min(u.x, v.x), std::min(u.y, v.y)},
+                    {std::max(u.x, v.x), std::max(u.y, v.y)}};
+      const bool expected = corners_behind(from, c, d, box);
+      behind += expected;
+      ASSERT_EQ(detail::HiddenVertices::box_behind(from, {c, d}, box), expected)
+          << "from (" << from.x << ", " << from.y << "), edge (" << c.x << ", " << c.y << ")-("
+          << d.x << ", " << d.y << "), box (" << box.low.x << ", " << box.low.y << ")-("
+          << box.high.x << ", " << box.high.y << ")";
+    }
+  }
+  EXPECT_GT(behind, 1000u);  // both answers are tested
+}
+
+// The best few of `scorer` but `skip` by the grid and by a scan (as best_few_of gives them) are
+// the same, in the same order. False where the grid cannot tell.
+template <typename Scorer, typename BestBeyond>
+bool expect_grid_gives_the_scan(const detail::BoundaryGrid& grid, const Ring& ring,
+                                const Scorer& scorer, std::size_t count, std::size_t skip,
+                                BestBeyond&& best_beyond, const std::string& what) {
+  std::vector<detail::ScoredVertex> by_grid, by_scan;
+  if (!grid.best_few(scorer, scorer.from, count, skip, best_beyond, by_grid)) return false;
+  detail::best_few_of(
+      scorer,
+      [&](auto&& visit) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          if (i != skip) visit(i);
+        }
+      },
+      count, by_scan);
+  EXPECT_EQ(by_grid.size(), by_scan.size()) << what;
+  for (std::size_t k = 0; k < std::min(by_grid.size(), by_scan.size()); ++k) {
+    EXPECT_EQ(by_grid[k].index, by_scan[k].index) << what << " rank " << k;
+    EXPECT_EQ(by_grid[k].score, by_scan[k].score) << what << " rank " << k;
+  }
+  return true;
+}
+
+// Issue 17: the quick searches of a hole's vertices take the few vertices of ∂P0 nearest to each
+// (and the few best by Eq. 8) from a grid. It must give what a scan gives, in the same order:
+// with ties of distance (integer points), duplicate points, clusters beside far vertices, points
+// outside the ring's box, concavities that outweigh distance, and tiny or huge coordinates far
+// from the origin.
+TEST(Issue17NoiseTexture, BestVerticesFromTheBoundaryGridAreThoseOfAScan) {
+  std::mt19937 random(20261206);
+  std::size_t queries = 0;
+  for (const auto& [scale, offset] : {std::pair{1.0, 0.0}, {1e-4, 1e6}, {1e5, -1e9}}) {
+    for (const int layout : {0, 1, 2}) {
+      for (const std::size_t n : {1, 7, 300, 5000}) {
+        std::uniform_int_distribution<int> small(0, 40), wide(-2000, 2000);
+        std::uniform_real_distribution<double> concave(0.0, 30.0);
+        Ring ring;
+        std::vector<double> concavity;
+        for (std::size_t i = 0; i < n; ++i) {
+          Vec2 p{double(small(random)), double(small(random))};  // layout 0: ties everywhere
+          if (layout == 1 && i % 50 == 0) p = {double(wide(random)), double(wide(random))};
+          if (layout == 2) p = {double(small(random) % 3), double(wide(random))};  // a thin strip
+          ring.push_back(Vec2{offset, offset} + p * scale);
+          concavity.push_back(i % 3 == 0 ? 0.0 : concave(random) * scale);
+        }
+        const double most_concave = *std::max_element(concavity.begin(), concavity.end());
+        const detail::BoundaryGrid grid(ring);
+        for (int q = 0; q < 60; ++q) {
+          const Vec2 from = Vec2{offset, offset} +
+                            Vec2{double(wide(random)) / 40.0, double(wide(random)) / 40.0} * scale;
+          const std::size_t skip = q % 2 ? detail::kNone : std::size_t(q) % n;
+          for (const std::size_t count : {1, 16}) {
+            const std::string what = "n " + std::to_string(n) + " layout " +
+                                     std::to_string(layout) + " scale " + std::to_string(scale) +
+                                     " query " + std::to_string(q);
+            // One point has no box to grid: its caller scans.
+            const bool nearest = expect_grid_gives_the_scan(
+                grid, ring, detail::Nearest{ring, from}, count, skip,
+                [](double reach) { return -reach; }, what + " nearest");
+            if (!nearest) {
+              ASSERT_EQ(n, 1u);
+              continue;
+            }
+            for (const auto& [sc, sd] : {std::pair{0.1, 1.0}, {0.0, 2.0}, {5.0, 0.5}}) {
+              const double numerator = 1.0 + sc * most_concave;
+              ASSERT_TRUE(expect_grid_gives_the_scan(
+                  grid, ring, detail::Eq8{ring, concavity, sc, sd, from}, count, skip,
+                  [&](double reach) { return numerator / (sd * reach); },
+                  what + " Eq. 8 sc " + std::to_string(sc)));
+            }
+            ++queries;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(queries, 3u * 3 * 3 * 60 * 2);
 }
 
 TEST(Issue16, SlabCutOpensEveryHole) {

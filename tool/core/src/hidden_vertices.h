@@ -25,21 +25,29 @@ class HiddenVertices {
   // per vertex of ∂P0. The edges found serve the next calls, from any vertex.
   void refuse(RegionView& view, VertexRef from, std::vector<signed char>& seen);
 
- private:
   struct Box {
     Vec2 low, high;
     void add(Vec2 point);
   };
   using Edge = std::pair<Vec2, Vec2>;
-  static Box box_of(const Ring& ring, std::size_t first, std::size_t last);
+  // Whether every point of the box lies strictly behind the edge as seen from `from` (exact).
   static bool box_behind(Vec2 from, const Edge& edge, const Box& box);
+
+ private:
+  struct Wall {
+    Edge edge;
+    int side;  // the orientation of the current `from` to the edge's line
+  };
+  static bool box_behind(Vec2 from, const Wall& wall, const Box& box);
+  static Box box_of(const Ring& ring, std::size_t first, std::size_t last);
+  static Vec2 least_corner(Vec2 a, Vec2 b, int sign, const Box& box);
 
   static constexpr std::size_t kRun = 16;
   static constexpr std::size_t kPart = 4;  // a run no single edge hides is tried in parts
   static constexpr std::size_t kEdgesKept = 4;
   const Ring& outer_;
   std::vector<Box> run_boxes_;  // of each run of kRun vertices of ∂P0
-  std::vector<Edge> walls_;     // the edges that hid runs, most recent first
+  std::vector<Wall> walls_;     // the edges that hid runs, most recent first
 };
 
 }  // namespace hullcook::detail

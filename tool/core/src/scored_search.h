@@ -178,6 +178,18 @@ std::size_t best_few_of(const Scorer& scorer, Each&& each, std::size_t count,
   return visited;
 }
 
+// A quick search's end: the first of best_few (the best scored of `visited` candidates, in
+// order) that accept takes; else nullopt, with *gave_up set if some candidate was not tried.
+template <typename Accept>
+std::optional<std::size_t> first_of_best_few(const std::vector<ScoredVertex>& best_few,
+                                             std::size_t visited, Accept&& accept, bool* gave_up) {
+  for (const ScoredVertex& candidate : best_few) {
+    if (accept(candidate.index)) return candidate.index;
+  }
+  if (best_few.size() < visited && gave_up) *gave_up = true;
+  return std::nullopt;
+}
+
 // best_accepted_by_score over the scores of the vertices each visits, in that order, scoring
 // only what the search needs: a quick search its best few, a full one its top, and every score
 // (into candidates) only if accept refuses the top.
@@ -189,11 +201,7 @@ std::optional<std::size_t> best_accepted(const Scorer& scorer, Each&& each,
     // What first_accepted_by_score's quick search tests, in its order.
     thread_local std::vector<ScoredVertex> best_few;
     const std::size_t visited = best_few_of(scorer, each, quick_tests, best_few);
-    for (const ScoredVertex& candidate : best_few) {
-      if (accept(candidate.index)) return candidate.index;
-    }
-    if (best_few.size() < visited && gave_up) *gave_up = true;
-    return std::nullopt;
+    return first_of_best_few(best_few, visited, accept, gave_up);
   }
   const std::optional<ScoredVertex> top = top_of(scorer, each);
   if (!top) return std::nullopt;
