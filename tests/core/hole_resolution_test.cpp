@@ -1,7 +1,6 @@
 // Issue 16: every hole is resolved, whatever its shape and its neighbours. The polygons here
 // defeated the antipodal-pair cuts to ∂P0 (a node was kept whole with its holes, at any τ); each
 // must now decompose within τ under every measure, into pieces without holes and without slivers.
-#include "boundary_grid.h"
 #include "cut.h"
 #include "decompose_contract.h"
 #include "hidden_vertices.h"
@@ -406,84 +405,31 @@ TEST(Issue17NoiseTexture, BoxBehindAnEdgeDecidesAsItsFourCornersDo) {
   EXPECT_GT(behind, 1000u);  // both answers are tested
 }
 
-// The best few of `scorer` but `skip` by the grid and by a scan (as best_few_of gives them) are
-// the same, in the same order. False where the grid cannot tell.
-template <typename Scorer, typename BestBeyond>
-bool expect_grid_gives_the_scan(const detail::BoundaryGrid& grid, const Ring& ring,
-                                const Scorer& scorer, std::size_t count, std::size_t skip,
-                                BestBeyond&& best_beyond, const std::string& what) {
-  std::vector<detail::ScoredVertex> by_grid, by_scan;
-  if (!grid.best_few(scorer, scorer.from, count, skip, best_beyond, by_grid)) return false;
-  detail::best_few_of(
-      scorer,
-      [&](auto&& visit) {
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          if (i != skip) visit(i);
-        }
-      },
-      count, by_scan);
-  EXPECT_EQ(by_grid.size(), by_scan.size()) << what;
-  for (std::size_t k = 0; k < std::min(by_grid.size(), by_scan.size()); ++k) {
-    EXPECT_EQ(by_grid[k].index, by_scan[k].index) << what << " rank " << k;
-    EXPECT_EQ(by_grid[k].score, by_scan[k].score) << what << " rank " << k;
+// A scan for the best few vertices by Eq. 8 (a hole's second cut, a notch's diagonal) skips a
+// vertex only where it surely scores lower than the last kept. Scores beyond 1e154 (a weight sc
+// of 1e150, which decompose accepts, or cuts 1e-156 long) squared the bar to infinity, and the
+// scan then kept its first vertex over a better one.
+TEST(ScoredSearch, Eq8ScansKeepTheBestWhereScoresSquareBeyondRange) {
+  for (const auto& [sc, scale] : {std::pair{1e150, 1.0}, {0.1, 1e-156}, {0.1, 1.0}}) {
+    const Ring ring{{0, 0}, {1 * scale, 0}, {1 * scale, 1 * scale}, {0, 1 * scale}};
+    const std::vector<double> concavity{1.0, 10.0, 0.5, 3.0};
+    const detail::Eq8 eq8{ring, concavity, sc, 1.0, Vec2{0.45, 0.4} * scale};
+    std::vector<detail::ScoredVertex> sorted;
+    for (std::size_t i = 0; i < ring.size(); ++i) sorted.push_back({eq8.score(i), i});
+    std::sort(sorted.begin(), sorted.end(), detail::scores_before);
+    auto every = [&](auto&& visit) {
+      for (std::size_t i = 0; i < ring.size(); ++i) visit(i);
+    };
+    const std::string what = "sc " + std::to_string(sc) + " scale " + std::to_string(scale);
+    std::vector<detail::ScoredVertex> best;
+    detail::best_few_of(eq8, every, 2, best);
+    ASSERT_EQ(best.size(), 2u) << what;
+    EXPECT_EQ(best[0].index, sorted[0].index) << what;
+    EXPECT_EQ(best[1].index, sorted[1].index) << what;
+    const auto top = detail::top_of(eq8, every);
+    ASSERT_TRUE(top) << what;
+    EXPECT_EQ(top->index, sorted[0].index) << what;
   }
-  return true;
-}
-
-// Issue 17: the quick searches of a hole's vertices take the few vertices of ∂P0 nearest to each
-// (and the few best by Eq. 8) from a grid. It must give what a scan gives, in the same order:
-// with ties of distance (integer points), duplicate points, clusters beside far vertices, points
-// outside the ring's box, concavities that outweigh distance, and tiny or huge coordinates far
-// from the origin.
-TEST(Issue17NoiseTexture, BestVerticesFromTheBoundaryGridAreThoseOfAScan) {
-  std::mt19937 random(20261206);
-  std::size_t queries = 0;
-  for (const auto& [scale, offset] : {std::pair{1.0, 0.0}, {1e-4, 1e6}, {1e5, -1e9}}) {
-    for (const int layout : {0, 1, 2}) {
-      for (const std::size_t n : {1, 7, 300, 5000}) {
-        std::uniform_int_distribution<int> small(0, 40), wide(-2000, 2000);
-        std::uniform_real_distribution<double> concave(0.0, 30.0);
-        Ring ring;
-        std::vector<double> concavity;
-        for (std::size_t i = 0; i < n; ++i) {
-          Vec2 p{double(small(random)), double(small(random))};  // layout 0: ties everywhere
-          if (layout == 1 && i % 50 == 0) p = {double(wide(random)), double(wide(random))};
-          if (layout == 2) p = {double(small(random) % 3), double(wide(random))};  // a thin strip
-          ring.push_back(Vec2{offset, offset} + p * scale);
-          concavity.push_back(i % 3 == 0 ? 0.0 : concave(random) * scale);
-        }
-        const double most_concave = *std::max_element(concavity.begin(), concavity.end());
-        const detail::BoundaryGrid grid(ring);
-        for (int q = 0; q < 60; ++q) {
-          const Vec2 from = Vec2{offset, offset} +
-                            Vec2{double(wide(random)) / 40.0, double(wide(random)) / 40.0} * scale;
-          const std::size_t skip = q % 2 ? detail::kNone : std::size_t(q) % n;
-          for (const std::size_t count : {1, 16}) {
-            const std::string what = "n " + std::to_string(n) + " layout " +
-                                     std::to_string(layout) + " scale " + std::to_string(scale) +
-                                     " query " + std::to_string(q);
-            // One point has no box to grid: its caller scans.
-            const bool nearest = expect_grid_gives_the_scan(
-                grid, ring, detail::Nearest{ring, from}, count, skip,
-                [](double reach) { return -reach; }, what + " nearest");
-            if (!nearest) {
-              ASSERT_EQ(n, 1u);
-              continue;
-            }
-            for (const auto& [sc, sd] : {std::pair{0.1, 1.0}, {0.0, 2.0}, {5.0, 0.5}}) {
-              const double numerator = 1.0 + sc * most_concave;
-              ASSERT_TRUE(expect_grid_gives_the_scan(
-                  grid, ring, detail::Eq8{ring, concavity, sc, sd, from}, count, skip,
-                  [&](double reach) { return numerator / (sd * reach); },
-                  what + " Eq. 8 sc " + std::to_string(sc)));
-            }
-            ++queries;
-          }
-        }
-      }
-    }
-  }
-  EXPECT_EQ(queries, 3u * 3 * 3 * 60 * 2);
 }
 
 TEST(Issue16, SlabCutOpensEveryHole) {

@@ -3,9 +3,6 @@
 #include "predicates_inline.h"
 
 #include <algorithm>
-#include <array>
-#include <cstdint>
-#include <cstring>
 
 namespace hullcook::detail {
 
@@ -42,44 +39,22 @@ Vec2 HiddenVertices::least_corner(Vec2 a, Vec2 b, int sign, const Box& box) {
 // Each of the three strict sides holds at every corner when it holds at the least corner: three
 // exact orientations instead of twelve.
 bool HiddenVertices::box_behind(Vec2 from, const Edge& edge, const Box& box) {
-  return box_behind(from, Wall{edge, fast_orientation(edge.first, edge.second, from)}, box);
-}
-
-bool HiddenVertices::box_behind(Vec2 from, const Wall& wall, const Box& box) {
-  const auto [c, d] = wall.edge;
-  const int side = wall.side;
-  return side != 0 && fast_orientation(c, d, least_corner(c, d, -side, box)) == -side &&
+  const auto [c, d] = edge;
+  const int side = fast_orientation(c, d, from);
+  if (side == 0) return false;
+  return fast_orientation(c, d, least_corner(c, d, -side, box)) == -side &&
          fast_orientation(from, c, least_corner(from, c, side, box)) == side &&
          fast_orientation(from, d, least_corner(from, d, -side, box)) == -side;
 }
 
-namespace {
-
-// The entries of seen for vertices [first, first + 16), as two words.
-std::array<std::uint64_t, 2> run_words(const std::vector<signed char>& seen, std::size_t first) {
-  std::array<std::uint64_t, 2> words;
-  std::memcpy(words.data(), seen.data() + first, sizeof words);
-  return words;
-}
-
-constexpr std::uint64_t kLowBits = 0x0101010101010101u;
-
-// Whether a word of seen entries (each -1, 0 or 1) has a -1 (high bit set), or a 1 (low bit set
-// without the high bit).
-bool has_unknown(std::uint64_t word) { return (word & (kLowBits << 7)) != 0; }
-bool has_seen(std::uint64_t word) { return (word & kLowBits & ~((word >> 7) & kLowBits)) != 0; }
-
-}  // namespace
-
 void HiddenVertices::refuse(RegionView& view, VertexRef from_vertex,
                             std::vector<signed char>& seen) {
   const Vec2 from = view.at(from_vertex);
-  for (Wall& wall : walls_) wall.side = fast_orientation(wall.edge.first, wall.edge.second, from);
   // The edge that hid a run likely hides the next, which lies beside it: the edges are tried
   // most recent first.
   auto hidden = [&](const Box& box) {
     const auto wall = std::find_if(walls_.begin(), walls_.end(),
-                                   [&](const Wall& wall) { return box_behind(from, wall, box); });
+                                   [&](const Edge& edge) { return box_behind(from, edge, box); });
     if (wall == walls_.end()) return false;
     std::rotate(walls_.begin(), wall, wall + 1);
     return true;
@@ -89,8 +64,8 @@ void HiddenVertices::refuse(RegionView& view, VertexRef from_vertex,
     const auto edge = view.edge_across(from_vertex, (box.low + box.high) * 0.5);
     if (!edge) return false;
     if (walls_.size() == kEdgesKept) walls_.pop_back();
-    walls_.insert(walls_.begin(), Wall{*edge, fast_orientation(edge->first, edge->second, from)});
-    return box_behind(from, walls_.front(), box);
+    walls_.insert(walls_.begin(), *edge);
+    return box_behind(from, *edge, box);
   };
   auto refuse_all = [&](std::size_t first, std::size_t last) {
     std::fill(seen.begin() + static_cast<std::ptrdiff_t>(first),
@@ -98,13 +73,10 @@ void HiddenVertices::refuse(RegionView& view, VertexRef from_vertex,
   };
   for (std::size_t run = 0; run < run_boxes_.size(); ++run) {
     const std::size_t first = run * kRun, last = std::min(first + kRun, outer_.size());
-    bool unknown = false, any_seen = false;  // any_seen: then no edge hides the run
-    if (last - first == kRun) {
-      for (const std::uint64_t word : run_words(seen, first)) {
-        unknown |= has_unknown(word), any_seen |= has_seen(word);
-      }
-    } else {
-      for (std::size_t i = first; i < last; ++i) unknown |= seen[i] < 0, any_seen |= seen[i] == 1;
+    bool unknown = false, any_seen = false;
+    for (std::size_t i = first; i < last; ++i) {
+      unknown |= seen[i] < 0;
+      any_seen |= seen[i] == 1;  // then no edge hides the run
     }
     if (!unknown || any_seen) continue;
     if (hidden(run_boxes_[run]) || hidden_by_a_new_edge(run_boxes_[run])) {

@@ -34,11 +34,6 @@ class HiddenVertices {
   static bool box_behind(Vec2 from, const Edge& edge, const Box& box);
 
  private:
-  struct Wall {
-    Edge edge;
-    int side;  // the orientation of the current `from` to the edge's line
-  };
-  static bool box_behind(Vec2 from, const Wall& wall, const Box& box);
   static Box box_of(const Ring& ring, std::size_t first, std::size_t last);
   static Vec2 least_corner(Vec2 a, Vec2 b, int sign, const Box& box);
 
@@ -47,7 +42,7 @@ class HiddenVertices {
   static constexpr std::size_t kEdgesKept = 4;
   const Ring& outer_;
   std::vector<Box> run_boxes_;  // of each run of kRun vertices of ∂P0
-  std::vector<Wall> walls_;     // the edges that hid runs, most recent first
+  std::vector<Edge> walls_;     // the edges that hid runs, most recent first
 };
 
 }  // namespace hullcook::detail

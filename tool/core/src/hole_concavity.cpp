@@ -1,7 +1,6 @@
 #include "hole_concavity.h"
 
 #include "hullcook/core/buckets.h"
-#include "square_layers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -128,8 +127,20 @@ class VertexGrid {
     };
     // Square layers of cells around point's cell. After layer L every vertex left lies more than
     // L cells away in x or y; one cell less covers the rounding of the cell assignment.
-    for (int layer = 0; visit_square_layer(column, row, layer, columns_, rows_, visit_cell);
-         ++layer) {
+    for (int layer = 0;; ++layer) {
+      const int x0 = column - layer, x1 = column + layer, y0 = row - layer, y1 = row + layer;
+      if (x0 < 0 && y0 < 0 && x1 >= columns_ && y1 >= rows_) break;
+      const int clipped_x0 = std::max(x0, 0), clipped_x1 = std::min(x1, columns_ - 1);
+      if (y0 >= 0) {
+        for (int x = clipped_x0; x <= clipped_x1; ++x) visit_cell(x, y0);
+      }
+      if (y1 < rows_ && y1 != y0) {
+        for (int x = clipped_x0; x <= clipped_x1; ++x) visit_cell(x, y1);
+      }
+      for (int y = std::max(y0 + 1, 0); y <= std::min(y1 - 1, rows_ - 1); ++y) {
+        if (x0 >= 0) visit_cell(x0, y);
+        if (x1 < columns_ && x1 != x0) visit_cell(x1, y);
+      }
       const double reach = (layer - 1) * cell_size_;
       if (reach > 0.0 && reach * reach > best_squared * (1.0 + 1e-6)) break;
     }

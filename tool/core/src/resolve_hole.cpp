@@ -1,4 +1,3 @@
-#include "boundary_grid.h"
 #include "cut.h"
 #include "hidden_vertices.h"
 #include "hullcook/core/geometry.h"
@@ -22,11 +21,6 @@ constexpr std::size_t kQuickTests = 16;
 constexpr std::size_t kFirstCutsTried = 4;
 // A full search among fewer vertices of ∂P0 tests them all rather than prove some hidden.
 constexpr std::size_t kCandidatesWorthHiding = 64;
-// The quick searches (the vertices of ∂P0 nearest to a hole's vertex, or best by Eq. 8 from it)
-// scan ∂P0, until a hole needs more than this many of a kind (most holes need one or two) among
-// this many vertices of ∂P0: then a grid finds them.
-constexpr std::size_t kScansBeforeGrid = 4;
-constexpr std::size_t kCandidatesWorthAGrid = 256;
 
 // The cuts that open one hole, from the paper's (Eq. 5's antipodal pair joined to ∂P0) to the one
 // that always exists (a slab cut, see cut_across_slab). Each search reuses the sight lines the
@@ -85,17 +79,6 @@ class HoleOpener {
     if (p == info_.joined && info_.closest_ring == 0 && sees(p, info_.closest)) {
       return info_.closest;
     }
-    auto accept = [&](std::size_t i) { return sees(p, i); };
-    bool gave_up = false;
-    if (quick_tests > 0 && worth_a_grid(quick_nearest_searches_)) {
-      thread_local std::vector<ScoredVertex> best_few;
-      const Nearest nearest{outer_, hole_[p]};
-      auto best_beyond = [](double reach) { return -reach; };
-      if (boundary_grid_->best_few(nearest, hole_[p], quick_tests, kNone, best_beyond, best_few)) {
-        const auto chosen = first_of_best_few(best_few, outer_.size(), accept, &gave_up);
-        return chosen ? *chosen : gave_up ? kGaveUp : kNone;
-      }
-    }
     const std::vector<signed char>* const known = hidden_from(p, quick_tests);
     auto each = [&](auto&& visit) {
       for (std::size_t i = 0; i < outer_.size(); ++i) {
@@ -103,17 +86,11 @@ class HoleOpener {
       }
     };
     thread_local std::vector<ScoredVertex> candidates;
-    const auto chosen =
-        best_accepted(Nearest{outer_, hole_[p]}, each, candidates, accept, quick_tests, &gave_up);
+    bool gave_up = false;
+    const auto chosen = best_accepted(
+        Nearest{outer_, hole_[p]}, each, candidates, [&](std::size_t i) { return sees(p, i); },
+        quick_tests, &gave_up);
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
-  }
-
-  // Whether a quick search, the count-th of its kind, takes its best few from the grid of ∂P0
-  // (then made).
-  bool worth_a_grid(std::size_t& count) {
-    if (outer_.size() < kCandidatesWorthAGrid || ++count <= kScansBeforeGrid) return false;
-    if (!boundary_grid_) boundary_grid_.emplace(outer_);
-    return true;
   }
 
   // A full search returns the best vertex p sees, whichever others it leaves out, so it leaves
@@ -139,24 +116,6 @@ class HoleOpener {
   // The vertex of ∂P0 but x that q's cut best reaches by Eq. 8 without meeting p-x.
   std::size_t best_second(std::size_t p, std::size_t x, std::size_t q, std::size_t quick_tests) {
     const Eq8 eq8{outer_, e_.outer.vertex, settings_.sc, settings_.sd, hole_[q]};
-    auto accept = [&](std::size_t i) {
-      return sees(q, i) && !segments_intersect(hole_[p], outer_[x], hole_[q], outer_[i]);
-    };
-    bool gave_up = false;
-    if (quick_tests > 0 && e_.outer.vertex.size() == outer_.size() &&
-        worth_a_grid(quick_eq8_searches_)) {
-      if (!concavity_bound_) {
-        concavity_bound_ = *std::max_element(e_.outer.vertex.begin(), e_.outer.vertex.end());
-      }
-      // No vertex reach or more away scores above the best concavity that near.
-      const double numerator = 1.0 + settings_.sc * *concavity_bound_;
-      auto best_beyond = [&](double reach) { return numerator / (settings_.sd * reach); };
-      thread_local std::vector<ScoredVertex> best_few;
-      if (boundary_grid_->best_few(eq8, hole_[q], quick_tests, x, best_beyond, best_few)) {
-        const auto chosen = first_of_best_few(best_few, outer_.size() - 1, accept, &gave_up);
-        return chosen ? *chosen : gave_up ? kGaveUp : kNone;
-      }
-    }
     const std::vector<signed char>* const known = hidden_from(q, quick_tests);
     auto each = [&](auto&& visit) {
       for (std::size_t i = 0; i < outer_.size(); ++i) {
@@ -164,7 +123,13 @@ class HoleOpener {
       }
     };
     thread_local std::vector<ScoredVertex> candidates;
-    const auto chosen = best_accepted(eq8, each, candidates, accept, quick_tests, &gave_up);
+    bool gave_up = false;
+    const auto chosen = best_accepted(
+        eq8, each, candidates,
+        [&](std::size_t i) {
+          return sees(q, i) && !segments_intersect(hole_[p], outer_[x], hole_[q], outer_[i]);
+        },
+        quick_tests, &gave_up);
     return chosen ? *chosen : gave_up ? kGaveUp : kNone;
   }
 
@@ -323,9 +288,6 @@ class HoleOpener {
   std::vector<std::size_t> closest_visible_from_;
   std::optional<HiddenVertices> hidden_;  // made by the first full search
   std::vector<char> hidden_proved_;       // per vertex of the hole: its hidden vertices marked
-  std::size_t quick_nearest_searches_ = 0, quick_eq8_searches_ = 0;
-  std::optional<BoundaryGrid> boundary_grid_;  // see worth_a_grid
-  std::optional<double> concavity_bound_;      // the greatest concavity of a vertex of ∂P0
   std::function<std::optional<std::pair<Region, Region>>()> sliver_fallback_;
 };
 

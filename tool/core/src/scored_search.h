@@ -114,10 +114,12 @@ struct Eq8 {
     return (1.0 + sc * concavity[i]) / (sd * distance(ring[i], from));
   }
   static double no_bar() { return 0.0; }
-  // score < threshold where numerator² < (threshold sd)² |cut|².
+  // score < threshold where numerator² < (threshold sd)² |cut|². A square that overflows or
+  // underflows bars nothing: an infinite bar would pass over vertices that score higher.
   double bar(double threshold) const {
     const double scaled = threshold * sd;
-    return scaled * scaled * (1.0 - 1e-9);
+    const double squared = scaled * scaled;
+    return squared > 1e-280 && squared < 1e280 ? squared * (1.0 - 1e-9) : no_bar();
   }
   bool below(std::size_t i, double bar) const {
     const Vec2 d = ring[i] - from;
@@ -178,18 +180,6 @@ std::size_t best_few_of(const Scorer& scorer, Each&& each, std::size_t count,
   return visited;
 }
 
-// A quick search's end: the first of best_few (the best scored of `visited` candidates, in
-// order) that accept takes; else nullopt, with *gave_up set if some candidate was not tried.
-template <typename Accept>
-std::optional<std::size_t> first_of_best_few(const std::vector<ScoredVertex>& best_few,
-                                             std::size_t visited, Accept&& accept, bool* gave_up) {
-  for (const ScoredVertex& candidate : best_few) {
-    if (accept(candidate.index)) return candidate.index;
-  }
-  if (best_few.size() < visited && gave_up) *gave_up = true;
-  return std::nullopt;
-}
-
 // best_accepted_by_score over the scores of the vertices each visits, in that order, scoring
 // only what the search needs: a quick search its best few, a full one its top, and every score
 // (into candidates) only if accept refuses the top.
@@ -201,7 +191,11 @@ std::optional<std::size_t> best_accepted(const Scorer& scorer, Each&& each,
     // What first_accepted_by_score's quick search tests, in its order.
     thread_local std::vector<ScoredVertex> best_few;
     const std::size_t visited = best_few_of(scorer, each, quick_tests, best_few);
-    return first_of_best_few(best_few, visited, accept, gave_up);
+    for (const ScoredVertex& candidate : best_few) {
+      if (accept(candidate.index)) return candidate.index;
+    }
+    if (best_few.size() < visited && gave_up) *gave_up = true;
+    return std::nullopt;
   }
   const std::optional<ScoredVertex> top = top_of(scorer, each);
   if (!top) return std::nullopt;
