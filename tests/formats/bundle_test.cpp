@@ -5,6 +5,7 @@
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/error.h"
+#include "hullcook/core/predicates.h"
 #include "hullcook/format/bundle_layout.h"
 #include "hullcook/format/crc32.h"
 #include "hullcook/runtime.h"
@@ -89,8 +90,11 @@ double distance_to_convex(Vec2 p, const Ring& ring) {
 
 Ring stored_ring(const runtime::Hull& hull) {
   Ring ring;
-  for (std::size_t i = 0; i < hull.vertex_count(); ++i)
-    ring.push_back({hull.vertex(i).x, hull.vertex(i).y});
+  // nearest_float: the floats themselves, whatever GCC's vectorizer makes of a pair of them.
+  for (std::size_t i = 0; i < hull.vertex_count(); ++i) {
+    const runtime::Vec2 v = hull.vertex(i);
+    ring.push_back({format::nearest_float(v.x), format::nearest_float(v.y)});
+  }
   return ring;
 }
 
@@ -440,19 +444,77 @@ TEST(Bundle, SpecksOfAnExactDecompositionAreStoredAtAFinerVariantOfAHalvedStep) 
 }
 
 // From the review of the second pass: a hull whose vertex is too far from the origin for the
-// 32-bit grid at a halved step refused the asset at once, before the second pass could store it
-// at a finer step; listed after the spine, the same hulls were stored. Now in either order.
+// grid at a halved step refused the asset at once, before the second pass could store it at a
+// finer step; listed after the spine, the same hulls were stored. Now in either order: at 3e6,
+// where floats are 0.25 apart, both are stored; at 1e7, where floats are 1 apart (coarser than
+// the step, 0.47) and flatten the sliver, both are refused alike.
 TEST(Bundle, ReviewTheOrderOfHullsDoesNotDecideWhetherAnAssetIsStored) {
-  const double y = 9808880.2099227905;  // 21e6 first steps, where halving the step runs out of grid
   const Ring spine = test::rectangle(0, 6000, 30360.82, 6100);
-  const Ring sliver{{1e7, y}, {1e7 + 500, y}, {1e7 + 250, y + 1e-4}};
-  std::string first, second;
-  ASSERT_NO_THROW(first = write_bundle({test::make_asset("far", {{1.0, {spine, sliver}}})}));
-  ASSERT_NO_THROW(second = write_bundle({test::make_asset("far", {{1.0, {sliver, spine}}})}));
-  for (const std::string* bytes : {&first, &second}) {
-    AlignedBytes aligned(*bytes);
-    Bundle bundle;
-    ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+  for (const double x : {3e6, 1e7}) {
+    const double y = x - 191119.7900772095;  // off the grid's lines at every step
+    const Ring sliver{{x, y}, {x + 500, y}, {x + 250, y + 1e-4}};
+    auto outcome = [](const std::vector<Ring>& hulls) {
+      try {
+        return "bytes " + write_bundle({test::make_asset("far", {{1.0, hulls}})});
+      } catch (const OutputError& error) {
+        return "refused " + std::string(error.what());
+      }
+    };
+    const std::string first = outcome({spine, sliver}), second = outcome({sliver, spine});
+    // The same outcome (the bytes list the hulls in their order).
+    EXPECT_EQ(first.starts_with("bytes "), second.starts_with("bytes ")) << x;
+    if (first.starts_with("refused ")) {
+      EXPECT_EQ(first, second) << x;
+    }
+    if (x < 5e6) {
+      ASSERT_TRUE(first.starts_with("bytes ")) << first;
+      AlignedBytes aligned(first.substr(6));
+      Bundle bundle;
+      EXPECT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+    } else {
+      EXPECT_NE(first.find("would reach the runtime as a line or a point"), std::string::npos)
+          << first;
+    }
+  }
+}
+
+// Found by stop 46's adversarial polygons: a 0.004 x 0.003 hull at (1e6, 1e6) was stored on the
+// grid, one step (0.022) wide, and written with exit 0, but the runtime's f32 vertices there are
+// 0.0625 apart and flattened it to a line. Now a hull is refused where the runtime's floats
+// would flatten it; every hull stored reaches the reader turning left, within the bound plus half
+// the floats' spacing per coordinate. A 4 x 3 hull at (1e6, 1e6) is stored as before.
+TEST(Bundle, AdversarialHullsThatTheRuntimesFloatsFlattenAreRefused) {
+  for (const double size : {0.004, 4.0}) {
+    for (const double offset : {0.0, 1000.25, 1e5, 262143.0, 262145.0, 1e6, 3e7}) {
+      const Ring hull{{offset, offset},
+                      {offset + size, offset},
+                      {offset + size, offset + 0.75 * size},
+                      {offset, offset + 0.75 * size}};
+      const std::vector<CookedAsset> assets{test::make_asset("speck", {{0.0, {hull}}})};
+      const std::string label = std::to_string(size) + " at " + std::to_string(offset);
+      std::string bytes;
+      try {
+        bytes = write_bundle(assets);
+      } catch (const OutputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("asset 'speck'"), std::string::npos) << message;
+        EXPECT_NE(message.find("would reach the runtime as a line or a point"), std::string::npos)
+            << message;
+        // Only a hull smaller than the floats' spacing, where floats are coarser than the grid.
+        EXPECT_LT(size, format::float_spacing(offset)) << label;
+        continue;
+      }
+      EXPECT_FALSE(size < 0.01 && offset >= 1e6) << label << ": stored";
+      AlignedBytes aligned(bytes);
+      Bundle bundle;
+      ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+      const runtime::Asset asset = bundle.find("speck");
+      const Ring floats = stored_ring(asset.level(0).hull(0));
+      EXPECT_TRUE(turns_left_somewhere(floats)) << label;
+      const double reach = asset.quantization_error() +
+                           std::sqrt(2.0) * 0.5 * format::float_spacing(offset + 2 * size);
+      for (const Vec2& v : floats) EXPECT_LE(distance_to_convex(v, hull), reach) << label;
+    }
   }
 }
 

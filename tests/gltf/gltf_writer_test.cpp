@@ -7,6 +7,7 @@
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/core/error.h"
+#include "hullcook/format/bundle_layout.h"
 
 #include <draco/compression/decode.h>
 #include <gtest/gtest.h>
@@ -95,8 +96,8 @@ double float_twice_area(const Ring& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Vec2& a = ring[i];
     const Vec2& b = ring[(i + 1) % ring.size()];
-    twice += double{static_cast<float>(a.x)} * double{static_cast<float>(b.y)} -
-             double{static_cast<float>(a.y)} * double{static_cast<float>(b.x)};
+    twice += format::nearest_float(a.x) * format::nearest_float(b.y) -
+             format::nearest_float(a.y) * format::nearest_float(b.x);
   }
   return twice;
 }
@@ -524,6 +525,36 @@ TEST(GltfWriter, NonFiniteCoordinatesAreRefusedNamingTheAsset) {
   asset = test::box_asset();
   asset.levels[0].hulls[0][0].x = 1e300;  // finite as a double, not as a float
   EXPECT_THROW(write_gltf({asset}, {}), OutputError);
+}
+
+// Found by stop 46's adversarial polygons: a 4 x 3 hull at (1e9, 1e9) was written with exit 0
+// as four copies of one float (floats are 64 apart there), and a triangle scaled by 1e-100 as
+// zeros. The writer now refuses a hull that the nearest floats flatten to a line or a point,
+// naming the asset, the hull and its level; what floats keep a polygon is written as before.
+TEST(GltfWriter, AdversarialHullsThatFloatsFlattenAreRefusedNamingTheAsset) {
+  auto write = [](std::vector<Ring> hulls) {
+    CookedAsset asset = test::base_asset("far");
+    asset.levels.push_back({asset.tau, std::move(hulls)});
+    try {
+      write_gltf({asset}, {.binary = true});
+      return std::string("written");
+    } catch (const OutputError& error) {
+      return std::string(error.what());
+    }
+  };
+  auto quad = [](double x, double y, double w, double h) {
+    return Ring{{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
+  };
+  EXPECT_EQ(write({quad(1e6, -1e6, 4, 3)}), "written");
+  EXPECT_EQ(write({quad(-1000.0, 0.0, 0.001, 0.001)}), "written");
+  EXPECT_EQ(write({quad(3e7, 3e7, 4, 3)}), "written");  // floats 2 apart: a 4 x 2 rectangle
+  const Ring tiny{{1e-100, 0.0}, {2e-100, 0.0}, {1.5e-100, 1e-100}};
+  const Ring sliver{{1.0, 1.0}, {2.0, 1.0}, {1.5, 1.0 + 1e-12}};
+  for (const Ring& flat : {quad(1e9, 1e9, 4, 3), quad(1e6, 1e6, 0.004, 0.003), tiny, sliver}) {
+    const std::string message = write({quad(0, 0, 1, 1), flat});
+    EXPECT_NE(message.find("asset far: hull 1 of level 0"), std::string::npos) << message;
+    EXPECT_NE(message.find("thinner than 32-bit floats resolve"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

@@ -119,6 +119,7 @@ Options parse(int argc, char** argv) {
 
 struct Tally {
   std::size_t cases = 0, rejected = 0, runs = 0, failed_runs = 0, failed_cases = 0;
+  std::size_t stored_only_near_origin = 0;  // runs whose bundle needs finer floats (not failures)
   double run_ms = 0, check_ms = 0;
   std::map<std::string, std::size_t> rules;  // failed runs per rule broken
   std::size_t shown = 0;
@@ -128,6 +129,7 @@ void record(Tally& tally, const CaseOutcome& outcome, const Options& options, bo
   ++tally.runs;
   tally.run_ms += outcome.run_ms;
   tally.check_ms += outcome.check_ms;
+  tally.stored_only_near_origin += outcome.stored_only_near_origin;
   if (options.progress) {
     std::printf("  %s: %zu pieces, %.1f ms, check %.1f ms\n", outcome.label.c_str(), outcome.pieces,
                 outcome.run_ms, outcome.check_ms);
@@ -147,6 +149,10 @@ void print_tally(const std::string& family, const Tally& tally) {
       "%9.1f s decompose/cook %7.1f s check\n",
       family.c_str(), tally.cases, tally.rejected, tally.runs, tally.failed_runs,
       tally.failed_cases, tally.run_ms / 1000, tally.check_ms / 1000);
+  if (tally.stored_only_near_origin > 0) {
+    std::printf("%-16s   %-36s %zu runs\n", "", "bundle stored only nearer the origin",
+                tally.stored_only_near_origin);
+  }
   for (const auto& [rule, count] : tally.rules) {
     std::printf("%-16s   %-36s %zu runs\n", "", rule.c_str(), count);
   }

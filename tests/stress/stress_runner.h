@@ -23,6 +23,9 @@ struct CaseOutcome {
   CheckReport report;
   std::string error;  // what decompose or cook threw, if it did
   std::size_t pieces = 0;
+  // The .hcb writer refused a hull that the runtime's floats would flatten where it lies, and
+  // stored the same hulls moved to the origin: not a failure.
+  bool stored_only_near_origin = false;
   double run_ms = 0;            // decomposing or cooking
   double check_ms = 0;          // the independent check
   std::filesystem::path saved;  // the failing input, saved for replay

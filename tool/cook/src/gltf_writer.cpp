@@ -15,10 +15,13 @@
 // which are the canonical data; the mesh is a mirror for 3D-minded importers.
 #include "hullcook/cook/gltf_writer.h"
 
+#include "contract_text.h"
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
 
 #include "hullcook/core/error.h"
+#include "hullcook/core/predicates.h"
+#include "hullcook/format/bundle_layout.h"
 
 #include <nlohmann/json.hpp>
 
@@ -63,8 +66,8 @@ double float_area(const Ring& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Vec2& a = ring[i];
     const Vec2& b = ring[(i + 1) % ring.size()];
-    twice += double{static_cast<float>(a.x)} * double{static_cast<float>(b.y)} -
-             double{static_cast<float>(a.y)} * double{static_cast<float>(b.x)};
+    twice += format::nearest_float(a.x) * format::nearest_float(b.y) -
+             format::nearest_float(a.y) * format::nearest_float(b.x);
   }
   return twice;
 }
@@ -106,6 +109,26 @@ void check_finite(const CookedAsset& asset) {
                             std::to_string(std::max(std::abs(vertex.x), std::abs(vertex.y))) +
                             " does not fit a 32-bit float");
         }
+      }
+    }
+  }
+  // A hull that the nearest floats flatten to a line or a point, or reverse, where it lies (far
+  // from the origin, or far smaller than a float's precision) would break the promise of
+  // docs/gltf-extras.md: convex, counter-clockwise, without repeated vertex.
+  Ring floats;
+  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+    const std::vector<Ring>& hulls = asset.levels[l].hulls;
+    for (std::size_t h = 0; h < hulls.size(); ++h) {
+      floats.clear();
+      for (const Vec2& v : hulls[h])
+        floats.push_back({format::nearest_float(v.x), format::nearest_float(v.y)});
+      if (turns_left_somewhere(hulls[h]) && !turns_left_somewhere(floats)) {
+        throw OutputError(
+            "asset " + asset.name + ": hull " + std::to_string(h) + " of level " +
+            std::to_string(l) + ", at " + detail::point(hulls[h][0]) +
+            ", is thinner than 32-bit floats resolve there and would reach a "
+            "reader as a line or a point; move the input nearer the origin "
+            "(for an image, --pivot), or cook it at a larger scale or with a weld (--weld)");
       }
     }
   }

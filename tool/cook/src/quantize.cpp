@@ -1,7 +1,10 @@
 #include "quantize.h"
 
+#include "contract_text.h"
+
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <glm/geometric.hpp>
 
@@ -78,7 +81,7 @@ double hausdorff(const Ring& a, const Ring& b) {
   return worst;
 }
 
-enum class Attempt { ok, too_coarse, too_wide, too_far };
+enum class Attempt { ok, too_coarse, too_wide, too_far, flattened_by_floats };
 
 // Why a hull was not stored at a step: the span of a too wide one, or what is too far.
 struct Refusal {
@@ -191,9 +194,50 @@ void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& poi
   }
 }
 
+// Whether the runtime's f32 vertices (each grid point's value rounded to float once) flatten
+// the hull to a line or a point, or reverse it, where floats are coarser than the grid: no vertex
+// turns left. (Nearer the origin a reader's floats lie within half a step of the grid, and a hull
+// thinner than that, a sliver stored at the grid's step beside a wide hull, is within the bound
+// whatever its floats do.)
+bool floats_flatten(const std::vector<GridPoint>& grid, double quantum) {
+  const bool coarse = std::any_of(grid.begin(), grid.end(), [&](const GridPoint& q) {
+    return !format::floats_resolve(static_cast<double>(q.x) * quantum, quantum) ||
+           !format::floats_resolve(static_cast<double>(q.y) * quantum, quantum);
+  });
+  if (!coarse) return false;
+  thread_local Ring floats;
+  floats.clear();
+  for (const GridPoint& q : grid) {
+    floats.push_back({format::nearest_float(static_cast<double>(q.x) * quantum),
+                      format::nearest_float(static_cast<double>(q.y) * quantum)});
+  }
+  return !turns_left_somewhere(floats);
+}
+
+// Why a hull that floats_flatten is refused.
+std::string flattened_by_floats(const Ring& hull, const std::vector<GridPoint>& grid,
+                                double quantum) {
+  double spacing = 0.0, low_x = hull[0].x, high_x = low_x, low_y = hull[0].y, high_y = low_y;
+  for (const GridPoint& q : grid) {
+    spacing = std::max({spacing, format::float_spacing(static_cast<double>(q.x) * quantum),
+                        format::float_spacing(static_cast<double>(q.y) * quantum)});
+  }
+  for (const Vec2& p : hull) {
+    low_x = std::min(low_x, p.x), high_x = std::max(high_x, p.x);
+    low_y = std::min(low_y, p.y), high_y = std::max(high_y, p.y);
+  }
+  return "a hull at " + detail::point(hull[0]) + ", " + detail::number(high_x - low_x) + " x " +
+         detail::number(high_y - low_y) +
+         " output units, would reach the runtime as a line or a point: 32-bit floats there are " +
+         detail::number(spacing) + " apart, coarser than the grid's step of " +
+         detail::number(quantum) + "; move the input nearer the origin (for an image, --pivot)";
+}
+
 // Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
 // the bound (a finer step may fix both), too_wide when it spans more than 16-bit deltas hold,
-// too_far when a vertex lies beyond the 32-bit grid (neither a finer step fixes).
+// too_far when a vertex lies beyond the 32-bit grid (neither a finer step fixes),
+// flattened_by_floats when the runtime's floats flatten the stored hull (another rounding may
+// not; a finer step does not).
 Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding rounding,
                       QuantizedHull& out, Refusal& refusal) {
   const double quantum = step;
@@ -259,14 +303,20 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
   // Each stored vertex is a hull vertex moved, and each hull vertex moved lies in the stored
   // (convex) hull: no vertex of either is farther from the other polygon than the farthest move.
   // The margin covers the rounding of hausdorff() below, which then could not say otherwise.
-  if (std::sqrt(moved_squared) <= bound - 1e-12 * size) return Attempt::ok;
-  Ring stored;
-  stored.reserve(grid.size());
-  for (const VertexRecord& v : out.vertices) {
-    stored.push_back({format::dequantize(out.record.base_x, v.dx, step),
-                      format::dequantize(out.record.base_y, v.dy, step)});
+  if (!(std::sqrt(moved_squared) <= bound - 1e-12 * size)) {
+    Ring stored;
+    stored.reserve(grid.size());
+    for (const VertexRecord& v : out.vertices) {
+      stored.push_back({format::dequantize(out.record.base_x, v.dx, step),
+                        format::dequantize(out.record.base_y, v.dy, step)});
+    }
+    if (!(hausdorff(hull, stored) <= bound)) return Attempt::too_coarse;
   }
-  return hausdorff(hull, stored) <= bound ? Attempt::ok : Attempt::too_coarse;
+  if (floats_flatten(grid, quantum)) {
+    refusal.too_far = flattened_by_floats(hull, grid, quantum);
+    return Attempt::flattened_by_floats;
+  }
+  return Attempt::ok;
 }
 
 }  // namespace
@@ -329,8 +379,11 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
       for (const Ring& hull : levels[l].hulls) {
         QuantizedHull quantized;
         Attempt outcome = Attempt::too_coarse;
-        for (std::size_t r = 0; r < rounding_count && outcome == Attempt::too_coarse; ++r)
+        for (std::size_t r = 0; r < rounding_count && (outcome == Attempt::too_coarse ||
+                                                       outcome == Attempt::flattened_by_floats);
+             ++r)
           outcome = quantize_hull(hull, step, bound, kRoundings[r], quantized, refusal);
+        if (outcome == Attempt::flattened_by_floats) return Attempt::too_far;
         if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
       }

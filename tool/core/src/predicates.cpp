@@ -107,6 +107,14 @@ int orientation(Vec2 a, Vec2 b, Vec2 c) {
   return (value > 0.0) - (value < 0.0);
 }
 
+bool turns_left_somewhere(const Ring& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; n >= 3 && i < n; ++i) {
+    if (orientation(ring[i], ring[(i + 1) % n], ring[(i + 2) % n]) > 0) return true;
+  }
+  return false;
+}
+
 bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
   // The box first: it is exact too, and it rules out nearly every edge of a ring walked for one
   // point without the orientation's error analysis.

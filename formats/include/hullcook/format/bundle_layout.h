@@ -51,6 +51,32 @@ inline constexpr std::uint32_t kMinHullVertices = 3;
 // The largest quantization step a reader accepts (SPEC §11): beyond it a 16-bit delta times the
 // step overflows a float.
 inline constexpr float kMaxQuantStep = 1e28f;
+// The 32-bit float nearest to value, as a double: what a reader holds of value. Through a
+// volatile float, because GCC 12's SLP vectorizer at -O2 and above drops the rounding when an x
+// and a y are converted to float and back side by side (the result was value itself).
+inline double nearest_float(double value) noexcept {
+  const volatile float rounded = static_cast<float>(value);
+  return rounded;
+}
+
+// The spacing of 32-bit floats at coordinate [output units]: the gap from the float nearest to
+// |coordinate| to the next one up (at least 2^-23 of it, at most 2^-24 below 2^23 of it).
+inline double float_spacing(double coordinate) noexcept {
+  const float magnitude = static_cast<float>(std::fabs(coordinate));
+  return static_cast<double>(std::nextafter(magnitude, std::numeric_limits<float>::infinity())) -
+         static_cast<double>(magnitude);
+}
+
+// Whether 32-bit floats resolve a grid of step at coordinate (SPEC §9): their spacing there is
+// at most the step, so that a reader's f32 vertex lies within step / 2 per coordinate of its
+// grid point and distinct grid points stay distinct floats. Below 2^23 steps from the origin
+// always (the spacing is at most 2^-23 of the coordinate); the coordinate must fit a float.
+inline bool floats_resolve(double coordinate, double step) noexcept {
+  const double magnitude = std::fabs(coordinate);
+  if (magnitude <= 8388608.0 * step) return true;
+  return magnitude <= static_cast<double>(std::numeric_limits<float>::max()) &&
+         float_spacing(magnitude) <= step;
+}
 
 struct BundleHeader {
   std::uint8_t magic[4];

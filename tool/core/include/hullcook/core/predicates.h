@@ -14,6 +14,10 @@ double orient2d(Vec2 a, Vec2 b, Vec2 c);
 // -1, 0 or +1: the exact sign of orient2d(a, b, c).
 int orientation(Vec2 a, Vec2 b, Vec2 c);
 
+// Whether some vertex of ring turns left (exact): false for a ring of fewer than 3 vertices, one
+// flattened to a line or a point, and one that turns only clockwise.
+bool turns_left_somewhere(const Ring& ring);
+
 // True when p lies on the closed segment ab (exact).
 bool on_segment(Vec2 a, Vec2 b, Vec2 p);
 
