@@ -1,5 +1,6 @@
 #include "contract.h"
 #include "hull_fitter.h"
+#include "mend_queue.h"
 #include "outline_distance.h"
 
 #include "hullcook/cook/constrain.h"
@@ -450,6 +451,93 @@ TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksD
   EXPECT_GT(local, compared * 9 / 10);  // the checks by removal are what is compared
   EXPECT_GT(changed, 50);               // the mending is exercised
   EXPECT_GT(refused, 10);               // and fails on some hulls (the crowns' notches)
+}
+
+// Found by stop 46's adversarial polygons: a star of 10 000 spikes at unit scale took 74 s to
+// cook (its decomposition 0.25 s), as mending its hull asked edges_to_mend and sorted every
+// candidate again after each of thousands of removals. MendQueue keeps both up to date: after
+// every removal (any candidate, not only the first) it must list what a full scan lists, in the
+// same order, on hulls with clusters closer than the weld, nearly collinear runs, two sides
+// closer than the weld, and on scattered rings.
+TEST(EngineLimits, Issue17_MendQueueListsWhatAFullScanListsAfterEveryRemoval) {
+  std::mt19937 random(4617);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t removals = 0, compared = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const double radius = std::pow(10.0, -3 + 6 * unit(random));
+    const double weld = radius * std::pow(10.0, -3 + 2 * unit(random));
+    const double bound = radius * (0.001 + 0.05 * unit(random));
+    Ring hull;
+    const int n = 4 + static_cast<int>(300 * unit(random));
+    // Every other hull a flat ellipse, whose two sides lie closer than the weld: pairs of
+    // vertices far apart along the ring.
+    const double flat = trial % 2 ? 1.0 : weld / radius * unit(random);
+    double angle = 0;
+    for (int i = 0; i < n && angle < 2 * M_PI; ++i) {
+      hull.push_back(radius * Vec2{std::cos(angle), flat * std::sin(angle)});
+      // Runs of vertices closer than the weld, and wide gaps.
+      angle += (unit(random) < 0.5 ? 0.5 * weld / radius : 6.0 / n) * (0.2 + unit(random));
+    }
+    // Every third, scattered points (any ring, reflex turns too), a third of them each closer
+    // than the weld to an earlier one anywhere along the ring.
+    if (trial % 3 == 2) {
+      for (std::size_t i = 0; i < hull.size(); ++i) {
+        hull[i] = unit(random) < 0.3 && i > 0
+                      ? hull[static_cast<std::size_t>(unit(random) * static_cast<double>(i))] +
+                            weld * Vec2{unit(random) - 0.5, unit(random) - 0.5}
+                      : radius * Vec2{unit(random), unit(random)};
+      }
+    }
+    const EngineLimits limits{8, trial % 7 == 6 ? 0.0 : weld};
+    // Any deterministic error: the distance beyond the circle.
+    auto error_of = [&](Vec2 apex) {
+      return trial % 3 == 2 ? glm::length(apex) / 10 : glm::length(apex / Vec2{1.0, flat}) - radius;
+    };
+    MendQueue queue(limits, bound, error_of);
+    ASSERT_TRUE(queue.start(hull));
+    while (hull.size() >= 4) {
+      const std::vector<std::size_t> edges = edges_to_mend(hull, limits);
+      ASSERT_EQ(queue.wanted_count(), edges.size()) << "trial " << trial;
+      struct Expected {
+        double error;
+        std::size_t edge;
+        Vec2 apex;
+      };
+      std::vector<Expected> expected;
+      for (const std::size_t edge : edges) {
+        const std::optional<Vec2> apex = removed_edge_apex(hull, edge);
+        if (apex && error_of(*apex) <= bound) expected.push_back({error_of(*apex), edge, *apex});
+      }
+      std::sort(expected.begin(), expected.end(), [](const Expected& a, const Expected& b) {
+        return std::tie(a.error, a.edge) < std::tie(b.error, b.edge);
+      });
+      ASSERT_EQ(queue.candidates().size(), expected.size()) << "trial " << trial;
+      std::size_t k = 0;
+      for (const MendQueue::Candidate& candidate : queue.candidates()) {
+        ASSERT_EQ(queue.index_of(candidate.id), expected[k].edge) << "trial " << trial;
+        ASSERT_EQ(queue.apex_of(candidate.id), expected[k].apex) << "trial " << trial;
+        ASSERT_EQ(candidate.error, expected[k].error) << "trial " << trial;
+        ++k;
+      }
+      ++compared;
+      if (expected.empty()) break;
+      const Expected& chosen = expected[static_cast<std::size_t>(
+          unit(random) < 0.7 ? 0 : unit(random) * static_cast<double>(expected.size()))];
+      Ring next;
+      for (std::size_t i = 0; i < hull.size(); ++i) {
+        if (i == chosen.edge) {
+          next.push_back(chosen.apex);
+        } else if (i != (chosen.edge + 1) % hull.size()) {
+          next.push_back(hull[i]);
+        }
+      }
+      queue.remove_edge(chosen.edge, next);
+      hull = std::move(next);
+      ++removals;
+    }
+  }
+  EXPECT_GT(removals, 2000u);
+  EXPECT_GT(compared, removals);
 }
 
 // edges_to_mend finds the pairs closer than the weld along a sorted axis: the same edges as

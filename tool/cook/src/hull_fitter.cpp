@@ -1,5 +1,7 @@
 #include "hull_fitter.h"
 
+#include "mend_queue.h"
+
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/predicates.h"
 
@@ -46,21 +48,6 @@ void for_each_vertex(const Region& region, Visit visit) {
   }
 }
 
-// Removing edge i (hull[i] -> hull[i+1]) extends its neighbouring edges until they meet, so the
-// hull only grows. Returns the meeting point, if the neighbours converge.
-std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i) {
-  std::size_t n = hull.size();
-  if (n < 4) return std::nullopt;
-  Vec2 a = hull[i], b = hull[(i + 1) % n];
-  Vec2 before = a - hull[(i + n - 1) % n];
-  Vec2 after = hull[(i + 2) % n] - b;
-  double denominator = cross(before, after);
-  if (!(denominator > 0)) return std::nullopt;
-  double t = cross(b - a, after) / denominator;
-  if (!(t >= 0) || !std::isfinite(t)) return std::nullopt;
-  return a + before * t;
-}
-
 // True when the ring turns left at every vertex (exactly) and winds once around: a simple convex
 // polygon, inside which is every point left of all its edges.
 bool winds_once_left(const Ring& ring) {
@@ -101,6 +88,19 @@ Ring without_edge(const Ring& hull, std::size_t i, Vec2 apex) {
 }
 
 }  // namespace
+
+std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i) {
+  std::size_t n = hull.size();
+  if (n < 4) return std::nullopt;
+  Vec2 a = hull[i], b = hull[(i + 1) % n];
+  Vec2 before = a - hull[(i + n - 1) % n];
+  Vec2 after = hull[(i + 2) % n] - b;
+  double denominator = cross(before, after);
+  if (!(denominator > 0)) return std::nullopt;
+  double t = cross(b - a, after) / denominator;
+  if (!(t >= 0) || !std::isfinite(t)) return std::nullopt;
+  return a + before * t;
+}
 
 double turn_height(const Ring& ring, std::size_t i) {
   std::size_t n = ring.size();
@@ -386,45 +386,66 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
   // The error of each apex, by its coordinates: most apexes stay the same from one removal to
   // the next (an apex depends on the four vertices round its edge).
   std::map<std::pair<double, double>, double> errors;
+  auto error_of = [&](Vec2 apex) {
+    if (!std::isfinite(apex.x) || !std::isfinite(apex.y)) return reach_.distance(apex, bound_);
+    const auto [known, added] = errors.try_emplace({apex.x, apex.y}, 0.0);
+    if (added) known->second = reach_.distance(apex, bound_);
+    return known->second;
+  };
+  // The edges to mend and the candidates among them, kept up to date for a large hull (else
+  // measured again after each removal: cheaper for a few dozen vertices, and for coordinates too
+  // large for the queue's grid).
+  constexpr std::size_t kQueuedFrom = 64;
+  MendQueue queue(limits_, bound_, error_of);
+  const bool queued = hull.size() >= kQueuedFrom && queue.start(hull);
+  struct Candidate {
+    double error;
+    std::size_t edge;
+    Vec2 apex;
+  };
+  std::vector<Candidate> scanned;
   while (true) {
     if (too_small(hull)) return std::nullopt;
-    std::vector<std::size_t> edges = edges_to_mend(hull, limits_);
-    if (edges.empty()) return hull;
+    std::vector<std::size_t> edges;
+    if (!queued) edges = edges_to_mend(hull, limits_);
+    if (queued ? queue.wanted_count() == 0 : edges.empty()) return hull;
     if (!measured) local = !whole_hull_checks_ && measure_depths(hull, depths), measured = true;
-    struct Candidate {
-      double error;
-      std::size_t edge;
-      Vec2 apex;
-    };
-    std::vector<Candidate> candidates;
+    scanned.clear();
     for (std::size_t edge : edges) {
       std::optional<Vec2> apex = removed_edge_apex(hull, edge);
       if (!apex) continue;
-      double error = 0;
-      if (std::isfinite(apex->x) && std::isfinite(apex->y)) {
-        const auto [known, added] = errors.try_emplace({apex->x, apex->y}, 0.0);
-        if (added) known->second = reach_.distance(*apex, bound_);
-        error = known->second;
-      } else {
-        error = reach_.distance(*apex, bound_);
-      }
-      if (error <= bound_) candidates.push_back({error, edge, *apex});
+      const double error = error_of(*apex);
+      if (error <= bound_) scanned.push_back({error, edge, *apex});
     }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    std::sort(scanned.begin(), scanned.end(), [](const Candidate& a, const Candidate& b) {
       return std::tie(a.error, a.edge) < std::tie(b.error, b.edge);
     });
-    bool grown = false;
-    for (const Candidate& candidate : candidates) {
-      Ring next = without_edge(hull, candidate.edge, candidate.apex);
+    // Tries a candidate; true when it passed and hull is without its edge.
+    auto try_removing = [&](std::size_t edge, Vec2 at) {
+      Ring next = without_edge(hull, edge, at);
       // without_edge puts the apex where the edge started, or last when the edge closed the ring.
-      const std::size_t apex = candidate.edge + 1 == hull.size() ? next.size() - 1 : candidate.edge;
+      const std::size_t apex = edge + 1 == hull.size() ? next.size() - 1 : edge;
       const bool passes =
-          local ? holds_component_after(next, apex, hull, candidate.edge, depths, changed) &&
+          local ? holds_component_after(next, apex, hull, edge, depths, changed) &&
                       reach_.apex_growth_within(next, apex, hull, !edges_suffice_, bound_)
                 : holds_component(next) && growth_within(next, hull);
-      if (passes) {
-        for (const auto& [k, depth] : changed) depths[k] = depth;
-        hull = std::move(next);
+      if (!passes) return false;
+      for (const auto& [k, depth] : changed) depths[k] = depth;
+      if (queued) queue.remove_edge(edge, next);
+      hull = std::move(next);
+      return true;
+    };
+    bool grown = false;
+    if (queued && hull.size() >= 4) {
+      for (const MendQueue::Candidate& candidate : queue.candidates()) {
+        if (try_removing(queue.index_of(candidate.id), queue.apex_of(candidate.id))) {
+          grown = true;
+          break;
+        }
+      }
+    }
+    for (const Candidate& candidate : scanned) {
+      if (try_removing(candidate.edge, candidate.apex)) {
         grown = true;
         break;
       }

@@ -13,6 +13,11 @@ namespace hullcook {
 // Height of vertex i above the line through its neighbours; negative for a reflex turn.
 double turn_height(const Ring& ring, std::size_t i);
 
+// Removing edge i (hull[i] -> hull[i+1]) extends its neighbouring edges until they meet, so the
+// hull only grows. Returns the meeting point, if the neighbours converge (and hull has at least 4
+// vertices).
+std::optional<Vec2> removed_edge_apex(const Ring& hull, std::size_t i);
+
 // Edges whose removal may mend a local violation of the limits (two vertices closer than the
 // weld distance, or a vertex nearly collinear with its neighbours), without duplicates.
 std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& limits);

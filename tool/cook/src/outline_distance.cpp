@@ -309,6 +309,10 @@ bool OutlineDistance::contains(Vec2 p) const {
 
 double OutlineDistance::distance(Vec2 p, double limit, EdgeSpan* nearest) const {
   ++distance_queries_;
+  return measure(p, limit, nearest);
+}
+
+double OutlineDistance::measure(Vec2 p, double limit, EdgeSpan* nearest) const {
   if (edges_.empty()) return kInfinity;
   if (contains(p)) return 0.0;
   // Cells further than k rings from p's cell (p clamped into the grid, which only brings it
@@ -353,6 +357,12 @@ double OutlineDistance::distance(Vec2 p, double limit, EdgeSpan* nearest) const 
 bool OutlineDistance::segment_within(Vec2 a, Vec2 b, double tau) const {
   if (edges_.empty()) return false;
   Vec2 v = b - a;
+  // Every point of ab lies within |ab| of a: a segment shorter than tau less a's distance is
+  // within tau without the edges near it, which are all of them when tau spans the outline (a
+  // hull of thousands of vertices mended beside a small star took minutes). The margin keeps the
+  // capsules' answer wherever rounding could decide it.
+  const double length = glm::length(v);
+  if (length < tau && measure(a, tau - length, nullptr) + length <= tau * (1 - 1e-9)) return true;
   std::vector<std::pair<double, double>>& covered = covered_;
   covered.clear();
   for_each_edge_near(a, b, tau, [&](std::uint32_t k) {

@@ -60,6 +60,8 @@ class OutlineDistance {
 
   int column_of(double x) const;
   int row_of(double y) const;
+  // distance() without counting the query.
+  double measure(Vec2 p, double limit, EdgeSpan* nearest) const;
   // Calls visit(column, row) for each cell that may hold a point within radius of segment ab.
   template <typename Visit>
   void for_each_cell_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
