@@ -161,10 +161,10 @@ void decode_png(const std::string& bytes, PixelSink& sink) {
   switch (colour_type) {
     case PNG_COLOR_TYPE_RGB:
     case PNG_COLOR_TYPE_PALETTE:
+      layout = transparent_count > 0 ? Layout{4, true} : Layout{3, false};
+      break;
     case PNG_COLOR_TYPE_GRAY:
-      layout = transparent_count > 0                ? Layout{4, true}
-               : colour_type == PNG_COLOR_TYPE_GRAY ? Layout{1, false}
-                                                    : Layout{3, false};
+      layout = transparent_count > 0 ? Layout{4, true} : Layout{1, false};
       break;
     case PNG_COLOR_TYPE_GRAY_ALPHA:
     case PNG_COLOR_TYPE_RGB_ALPHA:
