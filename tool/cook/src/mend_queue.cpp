@@ -10,9 +10,21 @@
 
 namespace hullcook {
 
+namespace {
+
+// A cell's index along an axis, within 2^62: an apex may lie farther out than the hull's
+// vertices, which start() checked (there it shares an end cell, and distances still decide).
+std::int64_t cell_index(double coordinate, double cell) {
+  double index = std::floor(coordinate / cell);
+  if (!(index >= -0x1p62)) index = -0x1p62;  // NaN too
+  if (!(index <= 0x1p62)) index = 0x1p62;
+  return static_cast<std::int64_t>(index);
+}
+
+}  // namespace
+
 std::uint64_t MendQueue::cell_key(Vec2 p) const {
-  const auto column = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto row = static_cast<std::int64_t>(std::floor(p.y / cell_));
+  const std::int64_t column = cell_index(p.x, cell_), row = cell_index(p.y, cell_);
   return static_cast<std::uint64_t>(column) * 0x9E3779B97F4A7C15ull ^
          static_cast<std::uint64_t>(row);
 }
@@ -20,8 +32,7 @@ std::uint64_t MendQueue::cell_key(Vec2 p) const {
 template <typename Visit>
 void MendQueue::for_each_near(Vec2 p, Visit visit) const {
   // Cells twice the weld wide: a vertex within the weld of p lies in p's cell or a neighbour.
-  const auto column = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto row = static_cast<std::int64_t>(std::floor(p.y / cell_));
+  const std::int64_t column = cell_index(p.x, cell_), row = cell_index(p.y, cell_);
   std::array<std::uint64_t, 9> keys;
   std::size_t count = 0;
   for (std::int64_t dc = -1; dc <= 1; ++dc) {
