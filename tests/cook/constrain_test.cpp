@@ -538,6 +538,19 @@ TEST(EngineLimits, Issue17_MendQueueListsWhatAFullScanListsAfterEveryRemoval) {
   }
   EXPECT_GT(removals, 2000u);
   EXPECT_GT(compared, removals);
+  // From the review: vertices 3.9e-166 apart square to a length of 0, closer than a weld of
+  // 1e-170, though thousands of cells of twice that weld apart.
+  Ring tiny;
+  for (int i = 0; i < 80; ++i) {
+    const double angle = 2 * M_PI * i / 80;
+    tiny.push_back(5e-155 * Vec2{std::cos(angle), std::sin(angle)});
+  }
+  tiny.insert(tiny.begin() + 11, tiny[10] + Vec2{3.9e-166, 0.0});
+  const EngineLimits limits{8, 1e-170};
+  MendQueue queue(limits, 1.0, [](Vec2) { return 0.0; });
+  ASSERT_TRUE(queue.start(tiny));
+  EXPECT_EQ(queue.wanted_count(), edges_to_mend(tiny, limits).size());
+  EXPECT_GT(queue.wanted_count(), 0u);
 }
 
 // edges_to_mend finds the pairs closer than the weld along a sorted axis: the same edges as

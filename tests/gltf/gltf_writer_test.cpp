@@ -7,6 +7,7 @@
 #include "hullcook/cook/cook.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/core/error.h"
+#include "hullcook/core/predicates.h"
 #include "hullcook/format/bundle_layout.h"
 
 #include <draco/compression/decode.h>
@@ -554,6 +555,34 @@ TEST(GltfWriter, AdversarialHullsThatFloatsFlattenAreRefusedNamingTheAsset) {
     const std::string message = write({quad(0, 0, 1, 1), flat});
     EXPECT_NE(message.find("asset far: hull 1 of level 0"), std::string::npos) << message;
     EXPECT_NE(message.find("thinner than 32-bit floats resolve"), std::string::npos) << message;
+  }
+}
+
+// From the review of that check: it refused only hulls that floats flatten wholly. A 4-gon at
+// (1e9, 1e9) whose first two vertices, 1 apart, round to one float was written with a repeated
+// vertex (and so a collinear triple), against the promise of docs/gltf-extras.md. Such vertices
+// are now left out: the hull is written as the floats' strictly convex polygon.
+TEST(GltfWriter, ReviewVerticesThatFloatsMakeRepeatedAreLeftOut) {
+  CookedAsset asset = test::base_asset("far");
+  const double o = 1e9;
+  const Ring cooked{{o, o}, {o + 1, o}, {o + 300, o + 10}, {o + 150, o + 300}};
+  const Ring square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  asset.levels.push_back({asset.tau, {square, cooked}});
+  const Parsed parsed = parse(write_gltf({asset}, {.binary = true}), true);
+  const auto hulls =
+      written_level(parsed, parsed.root["nodes"][0]["extras"]["hullcook"]["levels"][0]);
+  ASSERT_EQ(hulls.size(), 2u);
+  EXPECT_EQ(hulls[0].size(), 4u);  // the unit square, as cooked
+  ASSERT_EQ(hulls[1].size(), 3u);
+  Ring written;
+  for (const Point3& p : hulls[1]) written.push_back({p[0], p[1]});
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    EXPECT_GT(orientation(written[i], written[(i + 1) % 3], written[(i + 2) % 3]), 0) << i;
+    // Each is the float of a cooked vertex.
+    EXPECT_TRUE(std::any_of(cooked.begin(), cooked.end(), [&](Vec2 v) {
+      return format::nearest_float(v.x) == written[i].x &&
+             format::nearest_float(v.y) == written[i].y;
+    })) << i;
   }
 }
 

@@ -112,17 +112,58 @@ void check_finite(const CookedAsset& asset) {
       }
     }
   }
-  // A hull that the nearest floats flatten to a line or a point, or reverse, where it lies (far
-  // from the origin, or far smaller than a float's precision) would break the promise of
-  // docs/gltf-extras.md: convex, counter-clockwise, without repeated vertex.
+  if (asset.physics) {
+    require_finite(asset.physics->density, asset.name, "density");
+    require_finite(asset.physics->friction, asset.name, "friction");
+    require_finite(asset.physics->restitution, asset.name, "restitution");
+  }
+}
+
+// hull as the nearest floats hold it, less the vertices they make repeated, collinear or reflex
+// (each such float lies within about a float spacing of the hull without it): the promise of
+// docs/gltf-extras.md, convex, counter-clockwise, without repeated or collinear vertex. nullopt
+// when every float turns left, as nearly always (the hull is written as cooked); an empty ring
+// when fewer than 3 are left, or when the cooked hull itself turns left nowhere.
+std::optional<Ring> as_floats_hold_it(const Ring& hull) {
   Ring floats;
+  floats.reserve(hull.size());
+  for (const Vec2& v : hull)
+    floats.push_back({format::nearest_float(v.x), format::nearest_float(v.y)});
+  auto turns_left = [&](std::size_t i) {
+    const std::size_t n = floats.size();
+    return orientation(floats[(i + n - 1) % n], floats[i], floats[(i + 1) % n]) > 0;
+  };
+  bool every = floats.size() >= 3;
+  for (std::size_t i = 0; every && i < floats.size(); ++i) every = turns_left(i);
+  if (every) return std::nullopt;
+  if (!turns_left_somewhere(hull)) return std::nullopt;  // against the contract: as it is
+  // Dropping a vertex turns its neighbours: passes until one drops none.
+  for (bool dropped = true; dropped && floats.size() >= 3;) {
+    dropped = false;
+    for (std::size_t i = 0; i < floats.size() && floats.size() >= 3;) {
+      if (turns_left(i)) {
+        ++i;
+      } else {
+        floats.erase(floats.begin() + static_cast<std::ptrdiff_t>(i));
+        dropped = true;
+      }
+    }
+  }
+  if (floats.size() < 3) floats.clear();
+  return floats;
+}
+
+// The asset with its hulls as_floats_hold_it, or nullopt when none changes. Throws OutputError
+// for a hull that floats would flatten to a line or a point where it lies (far from the origin,
+// or far below a float's precision).
+std::optional<CookedAsset> held_by_floats(const CookedAsset& asset) {
+  std::optional<CookedAsset> held;
   for (std::size_t l = 0; l < asset.levels.size(); ++l) {
     const std::vector<Ring>& hulls = asset.levels[l].hulls;
     for (std::size_t h = 0; h < hulls.size(); ++h) {
-      floats.clear();
-      for (const Vec2& v : hulls[h])
-        floats.push_back({format::nearest_float(v.x), format::nearest_float(v.y)});
-      if (turns_left_somewhere(hulls[h]) && !turns_left_somewhere(floats)) {
+      std::optional<Ring> floats = as_floats_hold_it(hulls[h]);
+      if (!floats) continue;
+      if (floats->empty()) {
         throw OutputError(
             "asset " + asset.name + ": hull " + std::to_string(h) + " of level " +
             std::to_string(l) + ", at " + detail::point(hulls[h][0]) +
@@ -130,13 +171,11 @@ void check_finite(const CookedAsset& asset) {
             "reader as a line or a point; move the input nearer the origin "
             "(for an image, --pivot), or cook it at a larger scale or with a weld (--weld)");
       }
+      if (!held) held = asset;
+      held->levels[l].hulls[h] = std::move(*floats);
     }
   }
-  if (asset.physics) {
-    require_finite(asset.physics->density, asset.name, "density");
-    require_finite(asset.physics->friction, asset.name, "friction");
-    require_finite(asset.physics->restitution, asset.name, "restitution");
-  }
+  return held;
 }
 
 json physics_json(const PhysicsProperties& physics) {
@@ -628,8 +667,10 @@ void add_colliders(Document& document, const CookedAsset& asset, int node_index,
 
 // Adds the asset's node (its extras, and its finest level's mesh when it has triangles); returns
 // the node's index.
-int add_asset(Document& document, const CookedAsset& asset) {
-  check_finite(asset);
+int add_asset(Document& document, const CookedAsset& cooked) {
+  check_finite(cooked);
+  const std::optional<CookedAsset> held = held_by_floats(cooked);
+  const CookedAsset& asset = held ? *held : cooked;
   const int node_index = document.add_node({{"name", asset.name}});
   json extras = asset_extras(asset);
   std::optional<Quantization> grid;

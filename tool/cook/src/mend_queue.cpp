@@ -67,7 +67,9 @@ bool MendQueue::start(const Ring& hull) {
   grid_.clear();
   candidates_.clear();
   wanted_count_ = 0;
-  cell_ = limits_.weld > 0 ? 2 * limits_.weld : 0.0;
+  // At least 1e-150: vertices closer than about 1e-161 square to a length of 0 (below any
+  // weld, as edges_to_mend measures them) however many cells of a tinier weld apart.
+  cell_ = limits_.weld > 0 ? std::max(2 * limits_.weld, 1e-150) : 0.0;
   if (cell_ > 0) {
     // Cell indices must fit 64 bits, exactly enough that neighbouring cells differ by one.
     if (!std::isfinite(cell_)) return false;

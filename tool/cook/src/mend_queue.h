@@ -33,7 +33,7 @@ class MendQueue {
       : limits_(limits), bound_(bound), error_of_(std::move(error_of)) {}
 
   // Starts from hull. False when its coordinates are too large for a grid of cells twice the weld
-  // (or not finite): then the caller asks edges_to_mend each time instead.
+  // (at least 1e-150), or not finite: then the caller asks edges_to_mend each time instead.
   bool start(const Ring& hull);
 
   // How many edges are wanted (edges_to_mend(hull).size()).

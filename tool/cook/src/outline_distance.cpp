@@ -360,9 +360,11 @@ bool OutlineDistance::segment_within(Vec2 a, Vec2 b, double tau) const {
   // Every point of ab lies within |ab| of a: a segment shorter than tau less a's distance is
   // within tau without the edges near it, which are all of them when tau spans the outline (a
   // hull of thousands of vertices mended beside a small star took minutes). The margin keeps the
-  // capsules' answer wherever rounding could decide it.
+  // capsules' answer wherever rounding could decide it: of the lengths, and of contains(a),
+  // which may call a point within rounding of the boundary inside.
   const double length = glm::length(v);
-  if (length < tau && measure(a, tau - length, nullptr) + length <= tau * (1 - 1e-9)) return true;
+  const double margin = 1e-9 * tau + 1e-15 * (std::abs(a.x) + std::abs(a.y));
+  if (length < tau && measure(a, tau - length, nullptr) + length <= tau - margin) return true;
   std::vector<std::pair<double, double>>& covered = covered_;
   covered.clear();
   for_each_edge_near(a, b, tau, [&](std::uint32_t k) {
