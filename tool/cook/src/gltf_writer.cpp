@@ -125,8 +125,9 @@ void check_finite(const CookedAsset& asset) {
 // when every float turns left, as nearly always (the hull is written as cooked); an empty ring
 // when fewer than 3 are left, or when the cooked hull itself turns left nowhere.
 std::optional<Ring> as_floats_hold_it(const Ring& hull) {
-  Ring floats;
-  floats.reserve(hull.size());
+  // Scratch, reused: nearly every hull is written as cooked.
+  thread_local Ring floats;
+  floats.clear();
   for (const Vec2& v : hull)
     floats.push_back({format::nearest_float(v.x), format::nearest_float(v.y)});
   auto turns_left = [&](std::size_t i) {

@@ -21,12 +21,16 @@ std::int64_t cell_index(double coordinate, double cell) {
   return static_cast<std::int64_t>(index);
 }
 
+// The grid's key of a cell: cells of one key share a list (distances decide).
+std::uint64_t key_of(std::int64_t column, std::int64_t row) {
+  return static_cast<std::uint64_t>(column) * 0x9E3779B97F4A7C15ull ^
+         static_cast<std::uint64_t>(row);
+}
+
 }  // namespace
 
 std::uint64_t MendQueue::cell_key(Vec2 p) const {
-  const std::int64_t column = cell_index(p.x, cell_), row = cell_index(p.y, cell_);
-  return static_cast<std::uint64_t>(column) * 0x9E3779B97F4A7C15ull ^
-         static_cast<std::uint64_t>(row);
+  return key_of(cell_index(p.x, cell_), cell_index(p.y, cell_));
 }
 
 template <typename Visit>
@@ -37,8 +41,7 @@ void MendQueue::for_each_near(Vec2 p, Visit visit) const {
   std::size_t count = 0;
   for (std::int64_t dc = -1; dc <= 1; ++dc) {
     for (std::int64_t dr = -1; dr <= 1; ++dr) {
-      const std::uint64_t key = static_cast<std::uint64_t>(column + dc) * 0x9E3779B97F4A7C15ull ^
-                                static_cast<std::uint64_t>(row + dr);
+      const std::uint64_t key = key_of(column + dc, row + dr);
       // Two cells of one key share its list: visit it once.
       if (std::find(keys.begin(), keys.begin() + count, key) != keys.begin() + count) continue;
       keys[count++] = key;
@@ -129,7 +132,8 @@ void MendQueue::remove_edge(std::size_t edge, const Ring& next) {
   const std::size_t before = ids_.size();
   const std::uint32_t kept = ids_[edge], gone = ids_[(edge + 1) % before];
   // The vertices whose count of close vertices changes.
-  std::vector<std::uint32_t> touched;
+  std::vector<std::uint32_t>& touched = touched_;
+  touched.clear();
   auto part = [&](std::uint32_t id, int change) {
     for_each_near(vertex_[id].point, [&](std::uint32_t other) {
       if (other == id || !(glm::length(vertex_[id].point - vertex_[other].point) < limits_.weld)) {
@@ -163,7 +167,8 @@ void MendQueue::remove_edge(std::size_t edge, const Ring& next) {
   for (std::size_t d = n - 1; d <= n + 1; ++d) update_turn(next, (apex + d) % n);
   // Edges whose ends may have turned bad or good, or whose apex moved: the two round each
   // vertex touched, and those whose four vertices include the apex.
-  std::vector<std::size_t> edges;
+  std::vector<std::size_t>& edges = edges_;
+  edges.clear();
   for (std::size_t d = n - 2; d <= n + 1; ++d) edges.push_back((apex + d) % n);
   for (const std::uint32_t id : touched) {
     if (id == gone) continue;

@@ -88,6 +88,9 @@ class MendQueue {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid_;
   std::set<Candidate> candidates_;
   std::size_t wanted_count_ = 0;
+  // remove_edge's scratch, reused: the vertices it touched and the edges to update.
+  std::vector<std::uint32_t> touched_;
+  std::vector<std::size_t> edges_;
 };
 
 }  // namespace hullcook
