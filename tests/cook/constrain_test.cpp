@@ -369,7 +369,9 @@ TEST(EngineLimits, Issue17_HullThatNoEightLinesCloseIsRefusedAfterOneGreedyChain
 // Issue 17's robustness hunt: a square of 4000 vertices bulging out by 1e-6 (nearly collinear
 // on its sides) took minutes to cook, every removal of a hull edge checked against every vertex
 // and edge. The mending checks only what a removal changes; it must decide as the whole-hull
-// checks do, on hulls of nearly collinear vertices, jittered circles and pieces of stars.
+// checks do, on hulls of nearly collinear vertices, jittered circles and pieces of stars. Mending
+// with a MendQueue (from 64 vertices by default) must give what a full scan after each removal
+// gives, whatever the hull's size (stop 47's review).
 TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksDo) {
   std::mt19937 random(1704);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -415,7 +417,7 @@ TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksD
     }
     shapes.push_back(star);
   }
-  int compared = 0, changed = 0, refused = 0, local = 0;
+  int compared = 0, changed = 0, refused = 0, local = 0, large = 0;
   for (const Ring& shape : shapes) {
     for (double tau : {0.5, 2.0}) {
       // Its pieces at τ, and the whole shape as one piece (its pockets deeper than τ allowed).
@@ -433,15 +435,28 @@ TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksD
           local += by_removal.holds_component(piece.hull);
           const std::optional<Ring> by_change = by_removal.mend_local_violations(piece.hull);
           const std::optional<Ring> by_whole = whole.mend_local_violations(piece.hull);
+          // The queue (issue 17) against a full scan after each removal, on every hull.
+          HullFitter queued = inputs.fitter(limits), scanned = inputs.fitter(limits);
+          queued.queue_mending_from(0);
+          scanned.queue_mending_from(std::numeric_limits<std::size_t>::max());
+          const std::optional<Ring> by_queue = queued.mend_local_violations(piece.hull);
+          const std::optional<Ring> by_scan = scanned.mend_local_violations(piece.hull);
           ++compared;
           ASSERT_EQ(by_change.has_value(), by_whole.has_value())
               << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          ASSERT_EQ(by_queue.has_value(), by_scan.has_value())
+              << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          ASSERT_EQ(by_queue.has_value(), by_change.has_value());
           if (!by_change) {
             ++refused;
             continue;
           }
           EXPECT_EQ(*by_change, *by_whole)
               << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          EXPECT_EQ(*by_queue, *by_scan)
+              << "shape of " << shape.size() << ", tau " << tau << ", weld " << weld;
+          EXPECT_EQ(*by_queue, *by_change);
+          if (piece.hull.size() >= 64) ++large;
           if (*by_change != piece.hull) ++changed;
         }
       }
@@ -451,6 +466,7 @@ TEST(EngineLimits, Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksD
   EXPECT_GT(local, compared * 9 / 10);  // the checks by removal are what is compared
   EXPECT_GT(changed, 50);               // the mending is exercised
   EXPECT_GT(refused, 10);               // and fails on some hulls (the crowns' notches)
+  EXPECT_GT(large, 20);                 // hulls the default queues too
 }
 
 // Found by stop 46's adversarial polygons: a star of 10 000 spikes at unit scale took 74 s to

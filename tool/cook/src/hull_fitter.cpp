@@ -395,9 +395,8 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
   // The edges to mend and the candidates among them, kept up to date for a large hull (else
   // measured again after each removal: cheaper for a few dozen vertices, and for coordinates too
   // large for the queue's grid).
-  constexpr std::size_t kQueuedFrom = 64;
   MendQueue queue(limits_, bound_, error_of);
-  const bool queued = hull.size() >= kQueuedFrom && queue.start(hull);
+  const bool queued = hull.size() >= queued_from_ && queue.start(hull);
   struct Candidate {
     double error;
     std::size_t edge;

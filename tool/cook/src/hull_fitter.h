@@ -68,6 +68,10 @@ class HullFitter {
   // removal changes it (the two must agree).
   void check_whole_hull_when_mending(bool whole) { whole_hull_checks_ = whole; }
 
+  // For tests: mend hulls of at least this many vertices with a MendQueue, smaller ones by a
+  // full scan after each removal (the two must agree). The default is where the queue pays.
+  void queue_mending_from(std::size_t vertices) { queued_from_ = vertices; }
+
   // True when every point grown adds to known (convex, inside it) is within bound.
   bool growth_within(const Ring& grown, const Ring& known) const;
 
@@ -113,6 +117,7 @@ class HullFitter {
   bool reach_is_component_;
   bool edges_suffice_;
   bool whole_hull_checks_ = false;
+  std::size_t queued_from_ = 64;
   double bound_;
   EngineLimits limits_;
   // Per edge line of the hull being reduced: how many lines on its scan is known to reach (see
