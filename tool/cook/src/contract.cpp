@@ -2,6 +2,7 @@
 
 #include "cell_grid.h"
 #include "contract_text.h"
+#include "hull_lines.h"
 #include "hullcook/core/parallel_for.h"
 #include "outline_distance.h"
 
@@ -241,67 +242,6 @@ std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limi
 
 // --- Each component within τ of its hull's boundary. ----------------------------------------
 
-// The lines of a convex hull's edges. Inside the hull, the distance to its boundary is the least
-// distance to these lines, and the distance to one line is affine along a segment: a segment
-// whose two ends lie within τ of one line lies within τ of the boundary.
-class HullLines {
- public:
-  // The lines of hull, replacing any it held (one object serves every piece of a level).
-  void assign(const Ring& hull) {
-    from_.clear(), direction_.clear();
-    from_.reserve(hull.size()), direction_.reserve(hull.size());
-    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-      const Vec2 edge = hull[(i + 1) % n] - hull[i];
-      from_.push_back(hull[i]);
-      direction_.push_back(edge / glm::length(edge));
-    }
-  }
-
-  std::size_t size() const { return from_.size(); }
-
-  // Positive inside (left of the counter-clockwise edge k).
-  double distance(std::size_t k, Vec2 p) const {
-    return direction_[k].x * (p.y - from_[k].y) - direction_[k].y * (p.x - from_[k].x);
-  }
-
-  // The least distance of p to the lines, and the line that gives it.
-  std::pair<double, std::size_t> nearest(Vec2 p) const {
-    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
-    for (std::size_t k = 0; k < size(); ++k) best = std::min(best, {distance(k, p), k});
-    return best;
-  }
-
-  // Whether one line lies within limit of both p and q (the nearest line of a point on two is
-  // either).
-  bool one_within(Vec2 p, Vec2 q, double limit) const {
-    for (std::size_t k = 0; k < size(); ++k) {
-      if (distance(k, p) <= limit && distance(k, q) <= limit) return true;
-    }
-    return false;
-  }
-
-  // The largest, over the segment pq, of the least distance to the lines, and where: a concave
-  // function of the position along pq, so its slope's sign leads a bisection to the top.
-  std::pair<double, Vec2> farthest_on(Vec2 p, Vec2 q) const {
-    auto at = [&](double t) { return p + (q - p) * t; };
-    double low = 0.0, high = 1.0;
-    for (int step = 0; step < 64 && low < high; ++step) {
-      const double middle = 0.5 * (low + high);
-      const std::size_t k = nearest(at(middle)).second;
-      (distance(k, q) > distance(k, p) ? low : high) = middle;
-    }
-    std::pair<double, Vec2> best{-std::numeric_limits<double>::infinity(), p};
-    for (double t : {0.0, low, high, 1.0}) {
-      const double value = nearest(at(t)).first;
-      if (value > best.first) best = {value, at(t)};
-    }
-    return best;
-  }
-
- private:
-  std::vector<Vec2> from_, direction_;
-};
-
 // The worst of one kind of fault in a piece: only it is reported.
 struct Worst {
   double value = -std::numeric_limits<double>::infinity();
@@ -322,7 +262,8 @@ void check_component_in_hull(const Region& component, const HullLines& lines, do
     thread_local std::vector<std::pair<double, std::size_t>> nearest;
     nearest.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      nearest[i] = lines.nearest(ring[i]);
+      // Consecutive vertices are mostly nearest to one line: the last one's bounds the search.
+      nearest[i] = lines.nearest(ring[i], i == 0 ? 0 : nearest[i - 1].second);
       if (nearest[i].first < -slack) outside.offer(-nearest[i].first, ring[i]);
       if (nearest[i].first > limit) far.offer(nearest[i].first, ring[i]);
     }
