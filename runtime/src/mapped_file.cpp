@@ -71,7 +71,8 @@ Status MappedFile::open(const char* path) noexcept {
   close();
   if (path == nullptr) return Status::invalid_argument;
 #ifdef HULLCOOK_HAVE_MMAP
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: a pipe without a writer is refused below instead of blocking the open.
+  const int fd = ::open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return Status::io_error;
   struct stat info {};
   if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {

@@ -120,6 +120,29 @@ TEST_F(CookCli, MissingInputIsUsageOrInputError) {
   EXPECT_FALSE(fs::exists(directory / "out.json"));
 }
 
+// From the adversarial review of stop 48: a pipe named .png was reported missing.
+TEST_F(CookCli, ReviewAPipeIsBadInputNamedAsNoRegularFile) {
+  const fs::path pipe = directory / "pipe.png";
+  ASSERT_EQ(std::system(("mkfifo '" + pipe.string() + "'").c_str()), 0);
+  auto result = run_hullcook("cook " + pipe.string() + " -o " + (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find(pipe.string() + ": not a regular file or a directory"),
+            std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  // Every command that reads a file refuses it rather than waiting for a writer (or, for a
+  // device such as /dev/zero, reading on without end).
+  const fs::path poly = directory / "pipe.poly", bundle = directory / "pipe.hcb";
+  ASSERT_EQ(std::system(("mkfifo '" + poly.string() + "' '" + bundle.string() + "'").c_str()), 0);
+  for (const std::string& command :
+       {"decompose " + poly.string() + " --tau 1", "inspect " + bundle.string(),
+        std::string("decompose /dev/zero --tau 1"),
+        "preview /dev/zero -o " + (directory / "p.png").string()}) {
+    result = run_hullcook(command);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << command << result.output;
+  }
+}
+
 TEST_F(CookCli, UnwritableOutputIsExitCodeThree) {
   fs::path input = write("square.png", opaque_square_png());
   auto result = run_hullcook("cook " + input.string() + " -o " +

@@ -52,6 +52,9 @@ std::uint32_t read_u32(const std::string& bytes, std::size_t offset) {
 std::string read_file(const std::filesystem::path& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throw BadGltf("is a directory");
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    throw BadGltf("not a regular file");
+  }
   std::ifstream file(path, std::ios::binary);
   if (!file) throw BadGltf("cannot open the file");
   std::ostringstream content;

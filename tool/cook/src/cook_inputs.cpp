@@ -160,6 +160,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       add_input_file(files, input, input.filename().generic_string(), settings, asset_settings,
                      skipped);
     } else {
+      refuse_unless_regular_file(input);
       throw InputError(input.string() + ": no such file or directory");
     }
   }

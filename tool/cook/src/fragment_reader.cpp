@@ -222,6 +222,7 @@ Fragment parse_fragment(std::string_view bytes, const std::string& file) {
 }
 
 Fragment read_fragment(const std::filesystem::path& path) {
+  refuse_unless_regular_file(path);
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError(path.string() + ": cannot read");
   std::ostringstream bytes;

@@ -197,6 +197,7 @@ bool is_sheet_file(const std::filesystem::path& path) {
 }
 
 Sheet read_sheet(const std::filesystem::path& path, std::uint64_t max_pixels) {
+  refuse_unless_regular_file(path);
   std::ifstream stream(path, std::ios::binary);
   if (!stream) SheetReader(path).fail("", "cannot read");
   const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};

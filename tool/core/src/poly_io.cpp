@@ -163,6 +163,7 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
 }
 
 std::vector<Region> read_poly_file(const std::filesystem::path& path) {
+  refuse_unless_regular_file(path);
   std::ifstream file(path, std::ios::binary);
   if (!file) {
     throw InputError(path.string() + ": cannot read: " + std::strerror(errno));

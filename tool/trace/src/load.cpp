@@ -165,7 +165,8 @@ void decode(const std::string& bytes, const std::string& name, std::uint64_t max
 // The whole file in one read (no stream buffers, no copies).
 std::string read_file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Not blocking on a pipe without a writer (refused below); no effect on a regular file.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     if (errno == EISDIR) fail(name, "is a directory, not an image");
     fail(name, std::string("cannot open: ") + std::strerror(errno));
@@ -178,6 +179,8 @@ std::string read_file(const std::filesystem::path& path) {
   struct stat status {};
   if (::fstat(fd, &status) != 0) fail(name, "cannot read the file");
   if (S_ISDIR(status.st_mode)) fail(name, "is a directory, not an image");
+  // A pipe or a device may never end: images are read whole.
+  if (!S_ISREG(status.st_mode)) fail(name, "not a regular file");
   auto read_some = [&](char* into, std::size_t count) {
     while (true) {
       const ssize_t got = ::read(fd, into, count);
@@ -194,7 +197,7 @@ std::string read_file(const std::filesystem::path& path) {
     done += got;
   }
   bytes.resize(done);
-  // A file that grew since, or a pipe (size 0): read on to its end.
+  // A file that grew since: read on to its end.
   std::array<char, 65536> more;
   while (const std::size_t got = read_some(more.data(), more.size()))
     bytes.append(more.data(), got);

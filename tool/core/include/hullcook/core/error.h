@@ -1,6 +1,7 @@
 // Errors the cooker reports to its user, each mapped to one of the documented exit codes.
 #pragma once
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -35,5 +36,10 @@ struct UsageError : Error {
 struct ContractError : Error {
   explicit ContractError(const std::string& message) : Error(ExitCode::internal, message) {}
 };
+
+// Throws InputError naming path when it exists but is neither a regular file (or a link to one)
+// nor a directory: inputs are read whole, and a pipe or a device may block until written or never
+// end. A path that is missing or a directory is left to the caller's own message.
+void refuse_unless_regular_file(const std::filesystem::path& path);
 
 }  // namespace hullcook
