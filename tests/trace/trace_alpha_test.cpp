@@ -1,5 +1,6 @@
 // Tracing small hand-made alpha fields: geometry of the crossing points, the connectivity rule,
 // specks and pin holes, islands in holes.
+#include "hullcook/core/clean.h"
 #include "hullcook/core/error.h"
 #include "hullcook/trace/trace.h"
 #include "trace_test_util.h"
@@ -144,6 +145,43 @@ TEST(TraceAlpha, SimplificationNeverCollapsesTinyRings) {
   ASSERT_EQ(result.regions.size(), 1u);
   EXPECT_GE(result.regions[0].outer.size(), 3u);
   EXPECT_GT(test::ring_area(result.regions[0].outer), 0.0);
+}
+
+// From stop 48's adversarial review: at --simplify 2 (with --min-hole-area 0) the chord of the
+// large hole's simplified ring swallowed the small hole beside it, and the cook refused its own
+// rings ("holes 1 and 2 overlap", exit 2). The nesting check restored the small hole and the
+// outer ring, not the hole that had moved. Also noise at coarse bounds: every traced region must
+// pass the validation a .poly file does.
+TEST(TraceAlpha, ReviewAHoleWhoseChordSwallowsAnotherIsRestored) {
+  const AlphaImage image =
+      image_of({"......###....", ".....#...##..", "...##......#.", ".##.......#..", "#..........#.",
+                "#...........#", ".#..#.......#", ".#.#.#......#", "..#.#......#.", "....#....##..",
+                ".....#.##....", "......#......"});
+  for (double simplify : {1.5, 2.0, 3.0, 10.0}) {
+    TraceSettings settings = exact();
+    settings.simplify = simplify;
+    const TraceResult result = trace_alpha(image, settings);
+    EXPECT_EQ(hole_count(result), 2u) << "simplify " << simplify;
+    EXPECT_NO_THROW(clean_and_validate(result.regions, "m1.png")) << "simplify " << simplify;
+  }
+  std::uint32_t state = 48;
+  auto random = [&] {
+    state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+    return state;
+  };
+  for (int trial = 0; trial < 12; ++trial) {
+    const int side = 24 + trial * 9;
+    AlphaImage noise{side, side, std::vector<std::uint8_t>(std::size_t(side) * side, 0)};
+    for (std::uint8_t& alpha : noise.alpha)
+      alpha = random() % 100 < 50u + unsigned(trial) ? 255 : 0;
+    for (double simplify : {2.0, 5.0, 10.0}) {
+      TraceSettings settings = exact();
+      settings.simplify = simplify;
+      const TraceResult result = trace_alpha(noise, settings);
+      EXPECT_NO_THROW(clean_and_validate(result.regions, "noise"))
+          << "trial " << trial << ", simplify " << simplify;
+    }
+  }
 }
 
 TEST(TraceAlpha, EmptyAndInconsistentImages) {

@@ -482,10 +482,11 @@ double signed_area(const Ring& ring) {
 }
 
 std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads,
-                                 std::vector<char>* misplaced) {
+                                 std::vector<char>* misplaced, std::vector<int>* met_first) {
   const int count = static_cast<int>(rings.size());
   std::vector<int> parents(count, -1);
   if (misplaced) misplaced->assign(count, 0);
+  if (met_first) met_first->assign(count, -1);
   if (count == 0) return parents;
   double low_y = std::numeric_limits<double>::max(), high_y = std::numeric_limits<double>::lowest();
   std::vector<int> leftmost(count, 0);
@@ -670,6 +671,7 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
       (*misplaced)[r] = encloses != (outer[r] != outer[hit]);
     }
   }
+  if (met_first) *met_first = std::move(hits);
   return parents;
 }
 
@@ -691,13 +693,17 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
     }
     if (!restored) {
       std::vector<char> misplaced;
-      std::vector<int> now = nesting_parents(result, threads, &misplaced);
+      std::vector<int> met_first;
+      std::vector<int> now = nesting_parents(result, threads, &misplaced, &met_first);
       for (std::size_t r = 0; r < rings.size(); ++r) {
         if (now[r] == parents[r] && !misplaced[r]) continue;
         // Restoring rings already whole changes nothing: only a change loops again.
         restored |= simplifier.restore(static_cast<int>(r));
         if (now[r] >= 0) restored |= simplifier.restore(now[r]);
         if (parents[r] >= 0) restored |= simplifier.restore(parents[r]);
+        // The ring met first may be what moved: a hole whose chord swallowed another hole is
+        // neither's parent (stop 48's review: --simplify 2 left one hole inside another).
+        if (misplaced[r] && met_first[r] >= 0) restored |= simplifier.restore(met_first[r]);
       }
     }
     if (!restored) break;

@@ -17,8 +17,10 @@ double signed_area(const Ring& ring);
 // misplaced, when given, gets 1 for each ring whose parent that rule cannot be trusted for: the
 // ring first met leftwards encloses it but has its orientation, or does not and has the other
 // (rings that are not nested as outer boundaries and holes, e.g. after simplification).
+// met_first, when given, gets that ring first met leftwards for each ring, or -1.
 std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned threads = 1,
-                                 std::vector<char>* misplaced = nullptr);
+                                 std::vector<char>* misplaced = nullptr,
+                                 std::vector<int>* met_first = nullptr);
 
 // Simplifies every ring with error bound eps [px] (every vertex of the original ring lies within
 // eps of the simplified ring), keeping the rings simple, disjoint and nested as before, each with
