@@ -156,5 +156,36 @@ TEST(Predicates, SegmentIntersection) {
   EXPECT_FALSE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, std::nextafter(0.6, 1.0)}));
 }
 
+// What a reader may hold a convex hull as (stop 48: the .hcb writer's test of the runtime's
+// floats): collinear and repeated vertices pass; a reflex vertex, a spike, a second winding, a
+// line, a point and clockwise order do not.
+TEST(Predicates, WeaklyConvexRings) {
+  const Ring square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  EXPECT_TRUE(is_weakly_convex(square));
+  EXPECT_TRUE(is_weakly_convex({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}));          // collinear
+  EXPECT_TRUE(is_weakly_convex({{0, 0}, {2, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 0}}));  // repeated
+  EXPECT_FALSE(is_weakly_convex({{0, 0}, {1, 0.5}, {2, 0}, {2, 2}, {0, 2}}));       // reflex
+  EXPECT_FALSE(is_weakly_convex({{0, 0}, {3, 0}, {2, 0}, {2, 2}, {0, 2}}));         // spike
+  EXPECT_FALSE(is_weakly_convex({{0, 0}, {2, 0}, {4, 0}}));                         // line
+  EXPECT_FALSE(is_weakly_convex({{1, 1}, {1, 1}, {1, 1}}));                         // point
+  EXPECT_FALSE(is_weakly_convex({{0, 0}, {0, 2}, {2, 2}, {2, 0}}));                 // clockwise
+  Ring pentagram;  // every turn left, wound twice
+  for (int i = 0; i < 5; ++i) {
+    const double angle = 2 * M_PI * 2 * i / 5;
+    pentagram.push_back({std::cos(angle), std::sin(angle)});
+  }
+  EXPECT_TRUE(turns_left_somewhere(pentagram));
+  EXPECT_FALSE(is_weakly_convex(pentagram));
+  // Rotations of the square start anywhere and in every half-turn.
+  for (double angle = 0; angle < 7; angle += 0.25) {
+    Ring turned;
+    for (const Vec2 p : square) {
+      turned.push_back({p.x * std::cos(angle) - p.y * std::sin(angle),
+                        p.x * std::sin(angle) + p.y * std::cos(angle)});
+    }
+    EXPECT_TRUE(is_weakly_convex(turned)) << angle;
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -81,7 +81,7 @@ double hausdorff(const Ring& a, const Ring& b) {
   return worst;
 }
 
-enum class Attempt { ok, too_coarse, too_wide, too_far, flattened_by_floats };
+enum class Attempt { ok, too_coarse, too_wide, too_far, broken_by_floats };
 
 // Why a hull was not stored at a step: the span of a too wide one, or what is too far.
 struct Refusal {
@@ -194,12 +194,13 @@ void spread_nudged(const Ring& hull, double quantum, std::vector<GridPoint>& poi
   }
 }
 
-// Whether the runtime's f32 vertices (each grid point's value rounded to float once) flatten
-// the hull to a line or a point, or reverse it, where floats are coarser than the grid: no vertex
-// turns left. (Nearer the origin a reader's floats lie within half a step of the grid, and a hull
-// thinner than that, a sliver stored at the grid's step beside a wide hull, is within the bound
-// whatever its floats do.)
-bool floats_flatten(const std::vector<GridPoint>& grid, double quantum) {
+// Whether the runtime's f32 vertices (each grid point's value rounded to float once) no longer
+// bound a convex polygon, where floats are coarser than the grid: a line, a point, a reflex vertex
+// (stop 48's review: a sprite cooked with --pivot 2e5,2e5 had 8 of 22 hulls reflex in the
+// runtime) or a spike. They may repeat a vertex, or make it collinear. (Nearer the origin a
+// reader's floats lie within half a step of the grid, and a hull thinner than that, a sliver
+// stored at the grid's step beside a wide hull, is within the bound whatever its floats do.)
+bool floats_break(const std::vector<GridPoint>& grid, double quantum) {
   const bool coarse = std::any_of(grid.begin(), grid.end(), [&](const GridPoint& q) {
     return !format::floats_resolve(static_cast<double>(q.x) * quantum, quantum) ||
            !format::floats_resolve(static_cast<double>(q.y) * quantum, quantum);
@@ -211,12 +212,11 @@ bool floats_flatten(const std::vector<GridPoint>& grid, double quantum) {
     floats.push_back({format::nearest_float(static_cast<double>(q.x) * quantum),
                       format::nearest_float(static_cast<double>(q.y) * quantum)});
   }
-  return !turns_left_somewhere(floats);
+  return !is_weakly_convex(floats);
 }
 
-// Why a hull that floats_flatten is refused.
-std::string flattened_by_floats(const Ring& hull, const std::vector<GridPoint>& grid,
-                                double quantum) {
+// Why a hull that floats_break is refused.
+std::string broken_by_floats(const Ring& hull, const std::vector<GridPoint>& grid, double quantum) {
   double spacing = 0.0, low_x = hull[0].x, high_x = low_x, low_y = hull[0].y, high_y = low_y;
   for (const GridPoint& q : grid) {
     spacing = std::max({spacing, format::float_spacing(static_cast<double>(q.x) * quantum),
@@ -228,7 +228,8 @@ std::string flattened_by_floats(const Ring& hull, const std::vector<GridPoint>& 
   }
   return "a hull at " + detail::point(hull[0]) + ", " + detail::number(high_x - low_x) + " x " +
          detail::number(high_y - low_y) +
-         " output units, would reach the runtime as a line or a point: 32-bit floats there are " +
+         " output units, would reach the runtime as a line, a point or a polygon that is not "
+         "convex: 32-bit floats there are " +
          detail::number(spacing) + " apart, coarser than the grid's step of " +
          detail::number(quantum) + "; move the input nearer the origin (for an image, --pivot)";
 }
@@ -236,8 +237,8 @@ std::string flattened_by_floats(const Ring& hull, const std::vector<GridPoint>& 
 // Quantizes one hull at step; too_coarse when the rounded hull degenerates or strays beyond
 // the bound (a finer step may fix both), too_wide when it spans more than 16-bit deltas hold,
 // too_far when a vertex lies beyond the 32-bit grid (neither a finer step fixes),
-// flattened_by_floats when the runtime's floats flatten the stored hull (another rounding may
-// not; a finer step does not).
+// broken_by_floats when the runtime's floats break the stored hull (another rounding may not; a
+// finer step does not).
 Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding rounding,
                       QuantizedHull& out, Refusal& refusal) {
   const double quantum = step;
@@ -312,9 +313,9 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
     }
     if (!(hausdorff(hull, stored) <= bound)) return Attempt::too_coarse;
   }
-  if (floats_flatten(grid, quantum)) {
-    refusal.too_far = flattened_by_floats(hull, grid, quantum);
-    return Attempt::flattened_by_floats;
+  if (floats_break(grid, quantum)) {
+    refusal.too_far = broken_by_floats(hull, grid, quantum);
+    return Attempt::broken_by_floats;
   }
   return Attempt::ok;
 }
@@ -380,10 +381,10 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
         QuantizedHull quantized;
         Attempt outcome = Attempt::too_coarse;
         for (std::size_t r = 0; r < rounding_count && (outcome == Attempt::too_coarse ||
-                                                       outcome == Attempt::flattened_by_floats);
+                                                       outcome == Attempt::broken_by_floats);
              ++r)
           outcome = quantize_hull(hull, step, bound, kRoundings[r], quantized, refusal);
-        if (outcome == Attempt::flattened_by_floats) return Attempt::too_far;
+        if (outcome == Attempt::broken_by_floats) return Attempt::too_far;
         if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
       }

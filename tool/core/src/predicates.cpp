@@ -115,6 +115,32 @@ bool turns_left_somewhere(const Ring& ring) {
   return false;
 }
 
+bool is_weakly_convex(const Ring& ring) {
+  thread_local Ring distinct;
+  distinct.clear();
+  for (const Vec2& p : ring) {
+    if (distinct.empty() || p != distinct.back()) distinct.push_back(p);
+  }
+  while (distinct.size() > 1 && distinct.back() == distinct.front()) distinct.pop_back();
+  const std::size_t n = distinct.size();
+  if (n < 3) return false;
+  bool turns_left = false;
+  // Edge directions in the upper half-turn [0, pi): a walk that turns by less than a half-turn
+  // at each vertex winds once when it enters that half-turn once.
+  auto upper = [](Vec2 e) { return e.y > 0.0 || (e.y == 0.0 && e.x > 0.0); };
+  std::size_t windings = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = distinct[i], b = distinct[(i + 1) % n], c = distinct[(i + 2) % n];
+    const int turn = orientation(a, b, c);
+    if (turn < 0) return false;
+    const Vec2 in = b - a, out = c - b;
+    if (turn == 0 && in.x * out.x + in.y * out.y < 0.0) return false;  // back along itself
+    turns_left = turns_left || turn > 0;
+    windings += !upper(in) && upper(out);
+  }
+  return turns_left && windings == 1;
+}
+
 bool on_segment(Vec2 a, Vec2 b, Vec2 p) {
   // The box first: it is exact too, and it rules out nearly every edge of a ring walked for one
   // point without the orientation's error analysis.

@@ -18,6 +18,11 @@ int orientation(Vec2 a, Vec2 b, Vec2 c);
 // flattened to a line or a point, and one that turns only clockwise.
 bool turns_left_somewhere(const Ring& ring);
 
+// Whether ring, its consecutive repeated points taken as one, bounds a convex polygon counter-
+// clockwise where vertices may be collinear (exact turns): it never turns right, never doubles
+// back, turns left somewhere and winds once. What a reader may hold a convex hull as.
+bool is_weakly_convex(const Ring& ring);
+
 // True when p lies on the closed segment ab (exact).
 bool on_segment(Vec2 a, Vec2 b, Vec2 p);
 
