@@ -75,12 +75,6 @@ double HullLines::least_distance(const Bounds& bounds, Vec2 p) {
 
 template <typename Bound, typename Visit>
 void HullLines::for_each_line_within(Vec2 p, Vec2 q, Bound&& bound, Visit&& visit) const {
-  if (!use_runs_) {
-    for (std::size_t k = 0; k < size(); ++k) {
-      if (!visit(k)) return;
-    }
-    return;
-  }
   const double margin =
       margin_ + 1e-12 * (std::abs(p.x) + std::abs(p.y) + std::abs(q.x) + std::abs(q.y));
   // Skipped where a run's every line is surely farther than the bound from p or from q (a bound
@@ -101,11 +95,11 @@ void HullLines::for_each_line_within(Vec2 p, Vec2 q, Bound&& bound, Visit&& visi
   }
 }
 
-std::pair<double, std::size_t> HullLines::nearest(Vec2 p, std::size_t hint) const {
+std::pair<double, std::size_t> HullLines::nearest_by_runs(Vec2 p, std::size_t hint) const {
   std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
   // Measured first, the hint's line bounds the search; the least pair of (distance, index) is the
   // same in any order, and a line skipped is farther than it.
-  if (use_runs_ && hint < size()) best = {distance(hint, p), hint};
+  if (hint < size()) best = {distance(hint, p), hint};
   for_each_line_within(
       p, p, [&] { return best.first; },
       [&](std::size_t k) {
@@ -115,7 +109,7 @@ std::pair<double, std::size_t> HullLines::nearest(Vec2 p, std::size_t hint) cons
   return best;
 }
 
-bool HullLines::one_within(Vec2 p, Vec2 q, double limit) const {
+bool HullLines::one_within_by_runs(Vec2 p, Vec2 q, double limit) const {
   bool found = false;
   for_each_line_within(
       p, q, [&] { return limit; },

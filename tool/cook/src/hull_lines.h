@@ -9,7 +9,9 @@
 
 #include "hullcook/core/polygon.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -30,11 +32,23 @@ class HullLines {
 
   // The least distance of p to the lines, and the line that gives it (the lowest index of those
   // that do), as a scan of every line finds them. hint: a line to measure first (any index).
-  std::pair<double, std::size_t> nearest(Vec2 p, std::size_t hint = 0) const;
+  std::pair<double, std::size_t> nearest(Vec2 p, std::size_t hint = 0) const {
+    if (use_runs_) return nearest_by_runs(p, hint);
+    // Most hulls: a plain loop, inlined where the contract check measures every vertex.
+    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
+    for (std::size_t k = 0; k < size(); ++k) best = std::min(best, {distance(k, p), k});
+    return best;
+  }
 
   // Whether one line lies within limit of both p and q (the nearest line of a point on two is
   // either).
-  bool one_within(Vec2 p, Vec2 q, double limit) const;
+  bool one_within(Vec2 p, Vec2 q, double limit) const {
+    if (use_runs_) return one_within_by_runs(p, q, limit);
+    for (std::size_t k = 0; k < size(); ++k) {
+      if (distance(k, p) <= limit && distance(k, q) <= limit) return true;
+    }
+    return false;
+  }
 
   // The largest, over the segment pq, of the least distance to the lines, and where: a concave
   // function of the position along pq, so its slope's sign leads a bisection to the top.
@@ -45,10 +59,12 @@ class HullLines {
   struct Bounds {
     double direction_x[2], direction_y[2], from_x[2], from_y[2];
   };
+  std::pair<double, std::size_t> nearest_by_runs(Vec2 p, std::size_t hint) const;
+  bool one_within_by_runs(Vec2 p, Vec2 q, double limit) const;
   // A value no line of the run has a distance from p below, up to rounding (see margin_).
   static double least_distance(const Bounds& bounds, Vec2 p);
   // Calls visit(k) for every line whose distance from each point may be at most the bound that
-  // bound() gives at the time (every line when the runs are not used), in index order.
+  // bound() gives at the time, in index order, until visit returns false (with the runs only).
   template <typename Bound, typename Visit>
   void for_each_line_within(Vec2 p, Vec2 q, Bound&& bound, Visit&& visit) const;
 
