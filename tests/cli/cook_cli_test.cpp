@@ -141,6 +141,14 @@ TEST_F(CookCli, ReviewAPipeIsBadInputNamedAsNoRegularFile) {
     result = run_hullcook(command);
     EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << command << result.output;
   }
+  // In a folder too: left out, a game would miss the asset.
+  fs::remove(poly), fs::remove(bundle);
+  fs::create_directories(directory / "folder");
+  fs::rename(pipe, directory / "folder" / "pipe.png");
+  result = run_hullcook("cook " + (directory / "folder").string() + " -o " +
+                        (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("pipe.png: not a regular file"), std::string::npos) << result.output;
 }
 
 TEST_F(CookCli, UnwritableOutputIsExitCodeThree) {
