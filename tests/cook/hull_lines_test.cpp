@@ -92,6 +92,19 @@ TEST(HullLines, Issue17_NearestAndOneWithinAnswerAsAScanOfEveryLine) {
       ++queries;
     }
   }
+  // A point that is not finite (the review: a NaN hint pinned the answer to itself).
+  const Ring circle = [] {
+    Ring ring;
+    for (int i = 0; i < 100; ++i)
+      ring.push_back({std::cos(i * M_PI / 50), std::sin(i * M_PI / 50)});
+    return ring;
+  }();
+  HullLines lines;
+  lines.assign(circle);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = HUGE_VAL;
+  for (const Vec2 p : {Vec2{nan, 0}, Vec2{inf, inf}, Vec2{-inf, 1}, Vec2{0, nan}}) {
+    EXPECT_EQ(lines.nearest(p, 25), scanned_nearest(lines, p)) << p.x << ", " << p.y;
+  }
   EXPECT_GT(queries, 5000u);
   EXPECT_GT(large, 20u);  // hulls whose queries skip runs of lines
   EXPECT_GT(ties, 1000u);

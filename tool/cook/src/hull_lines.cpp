@@ -99,7 +99,8 @@ std::pair<double, std::size_t> HullLines::nearest_by_runs(Vec2 p, std::size_t hi
   std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), 0};
   // Measured first, the hint's line bounds the search; the least pair of (distance, index) is the
   // same in any order, and a line skipped is farther than it.
-  if (hint < size()) best = {distance(hint, p), hint};
+  // (Not a number: no pair compares below it, where the scan never takes one.)
+  if (hint < size() && !std::isnan(distance(hint, p))) best = {distance(hint, p), hint};
   for_each_line_within(
       p, p, [&] { return best.first; },
       [&](std::size_t k) {

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -695,8 +696,10 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
       std::vector<char> misplaced;
       std::vector<int> met_first;
       std::vector<int> now = nesting_parents(result, threads, &misplaced, &met_first);
+      std::vector<int> wrong;
       for (std::size_t r = 0; r < rings.size(); ++r) {
         if (now[r] == parents[r] && !misplaced[r]) continue;
+        wrong.push_back(static_cast<int>(r));
         // Restoring rings already whole changes nothing: only a change loops again.
         restored |= simplifier.restore(static_cast<int>(r));
         if (now[r] >= 0) restored |= simplifier.restore(now[r]);
@@ -704,6 +707,29 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
         // The ring met first may be what moved: a hole whose chord swallowed another hole is
         // neither's parent (stop 48's review: --simplify 2 left one hole inside another).
         if (misplaced[r] && met_first[r] >= 0) restored |= simplifier.restore(met_first[r]);
+      }
+      // Still wrong with all those whole: the ring that moved lies further out (a hole swallowed
+      // by another hole, an island of which the leftward ray meets first). It encloses the ring,
+      // so its box holds the ring's vertices: every such ring is restored.
+      if (!restored && !wrong.empty()) {
+        std::vector<std::array<double, 4>> boxes(result.size());
+        for (std::size_t s = 0; s < result.size(); ++s) {
+          std::array<double, 4>& box = boxes[s];
+          box = {result[s][0].x, result[s][0].x, result[s][0].y, result[s][0].y};
+          for (const Vec2& v : result[s]) {
+            box = {std::min(box[0], v.x), std::max(box[1], v.x), std::min(box[2], v.y),
+                   std::max(box[3], v.y)};
+          }
+        }
+        for (int r : wrong) {
+          const Vec2 p = result[static_cast<std::size_t>(r)][0];
+          for (std::size_t s = 0; s < result.size(); ++s) {
+            const std::array<double, 4>& box = boxes[s];
+            if (box[0] <= p.x && p.x <= box[1] && box[2] <= p.y && p.y <= box[3]) {
+              restored |= simplifier.restore(static_cast<int>(s));
+            }
+          }
+        }
       }
     }
     if (!restored) break;
