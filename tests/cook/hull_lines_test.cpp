@@ -2,6 +2,7 @@
 // took 38 s to check against its component, every vertex measured against every line; its runs of
 // lines now skip what cannot hold an answer).
 #include "hull_lines.h"
+#include "nearest_edges.h"
 
 #include <gtest/gtest.h>
 
@@ -108,6 +109,36 @@ TEST(HullLines, Issue17_NearestAndOneWithinAnswerAsAScanOfEveryLine) {
   EXPECT_GT(queries, 5000u);
   EXPECT_GT(large, 20u);  // hulls whose queries skip runs of lines
   EXPECT_GT(ties, 1000u);
+}
+
+// NearestEdges (HullFitter's depths) against a scan of every edge, on the same hulls and points
+// near them, inside, on them and far away.
+TEST(NearestEdges, Issue17_NearestEdgeAsAScanOfEveryEdge) {
+  std::mt19937 random(1718);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t queries = 0;
+  for (const Ring& hull : hulls(random)) {
+    const NearestEdges nearest(hull);
+    const std::size_t n = hull.size();
+    std::size_t hint = 0;
+    for (std::size_t i = 0; i < n; i += 1 + n / 40) {
+      const Vec2 a = hull[i], b = hull[(i + 1) % n], c = hull[(i + n / 2) % n];
+      for (const Vec2 p : {a, (a + b) * 0.5, a + (c - a) * unit(random), a + (a - c) * 1e-9,
+                           a + (a - c) * (3 * unit(random))}) {
+        std::pair<double, std::size_t> expected{std::numeric_limits<double>::infinity(), 0};
+        for (std::size_t k = 0; k < n; ++k) {
+          const double squared = point_segment_distance_squared(p, hull[k], hull[(k + 1) % n]);
+          if (squared < expected.first) expected = {squared, k};
+        }
+        for (std::size_t h : {hint, std::size_t{0}, n - 1, expected.second}) {
+          ASSERT_EQ(nearest(p, h), expected) << n << " edges, vertex " << i << ", hint " << h;
+        }
+        hint = expected.second;
+        ++queries;
+      }
+    }
+  }
+  EXPECT_GT(queries, 5000u);
 }
 
 }  // namespace

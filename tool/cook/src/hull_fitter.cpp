@@ -1,4 +1,5 @@
 #include "hull_fitter.h"
+#include "nearest_edges.h"
 
 #include "mend_queue.h"
 
@@ -458,8 +459,12 @@ bool HullFitter::measure_depths(const Ring& hull, std::vector<VertexDepth>& dept
   const double rounding = 1e-12 * size_of(hull);
   bool ok = true;
   std::size_t k = 0;
+  const NearestEdges nearest_edge(hull);
+  std::size_t edge = 0;  // the last vertex's: most neighbours share it
   for_each_vertex(component_, [&](Vec2 v) {
-    const auto [squared, edge_start] = squared_distance_and_edge(v, hull);
+    double squared;
+    std::tie(squared, edge) = nearest_edge(v, edge);
+    const Vec2 edge_start = hull.empty() ? Vec2{} : hull[edge];
     const double depth = std::sqrt(squared);
     // Located even within rounding (where holds_component passes it unlocated), so that
     // holds_component_after knows which vertices it must measure again.
