@@ -730,6 +730,12 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
             }
           }
         }
+        // Never seen, but the rings as traced are nested right: the last resort is all of them.
+        if (!restored) {
+          for (std::size_t s = 0; s < result.size(); ++s) {
+            restored |= simplifier.restore(static_cast<int>(s));
+          }
+        }
       }
     }
     if (!restored) break;
