@@ -9,15 +9,13 @@
 namespace hullcook {
 namespace {
 
-constexpr std::size_t kRun = 16;        // lines per run
-constexpr std::size_t kRunsOfRun = 16;  // runs per run of runs
 // Below this many lines a query scans them all: the runs would cost more than they skip.
 constexpr std::size_t kRunsFrom = 64;
 
 }  // namespace
 
 void HullLines::assign(const Ring& hull) {
-  from_.clear(), direction_.clear(), runs_.clear(), runs_of_runs_.clear();
+  from_.clear(), direction_.clear();
   from_.reserve(hull.size()), direction_.reserve(hull.size());
   bool finite = true;
   double scale = 0;
@@ -49,12 +47,8 @@ void HullLines::assign(const Ring& hull) {
                      {kInfinity, -kInfinity},
                      {kInfinity, -kInfinity},
                      {kInfinity, -kInfinity}};
-  for (std::size_t k = 0; k < size(); ++k) {
-    if (k % kRun == 0) runs_.push_back(empty);
-    if (k % (kRun * kRunsOfRun) == 0) runs_of_runs_.push_back(empty);
-    add(runs_.back(), direction_[k], from_[k]);
-    add(runs_of_runs_.back(), direction_[k], from_[k]);
-  }
+  runs_.build(size(), empty,
+              [&](Bounds& bounds, std::size_t k) { add(bounds, direction_[k], from_[k]); });
 }
 
 double HullLines::least_distance(const Bounds& bounds, Vec2 p) {
@@ -83,16 +77,7 @@ void HullLines::for_each_line_within(Vec2 p, Vec2 q, Bound&& bound, Visit&& visi
     const double limit = bound() + margin;
     return least_distance(bounds, p) > limit || least_distance(bounds, q) > limit;
   };
-  for (std::size_t group = 0; group < runs_of_runs_.size(); ++group) {
-    if (beyond(runs_of_runs_[group])) continue;
-    const std::size_t last_run = std::min(runs_.size(), (group + 1) * kRunsOfRun);
-    for (std::size_t run = group * kRunsOfRun; run < last_run; ++run) {
-      if (beyond(runs_[run])) continue;
-      for (std::size_t k = run * kRun, end = std::min(size(), k + kRun); k < end; ++k) {
-        if (!visit(k)) return;
-      }
-    }
-  }
+  runs_.for_each(beyond, visit);
 }
 
 std::pair<double, std::size_t> HullLines::nearest_by_runs(Vec2 p, std::size_t hint) const {

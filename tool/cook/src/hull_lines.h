@@ -8,6 +8,7 @@
 #pragma once
 
 #include "hullcook/core/polygon.h"
+#include "runs.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -69,7 +70,7 @@ class HullLines {
   void for_each_line_within(Vec2 p, Vec2 q, Bound&& bound, Visit&& visit) const;
 
   std::vector<Vec2> from_, direction_;
-  std::vector<Bounds> runs_, runs_of_runs_;
+  Runs<Bounds> runs_;
   // Beyond any difference rounding makes between a distance and its run's bound [units].
   double margin_ = 0;
   bool use_runs_ = false;

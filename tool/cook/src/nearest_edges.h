@@ -3,6 +3,7 @@
 
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/polygon.h"
+#include "runs.h"
 
 #include <glm/common.hpp>
 
@@ -25,18 +26,17 @@ class NearestEdges {
   explicit NearestEdges(const Ring& ring) : ring_(ring) {
     const std::size_t n = ring.size();
     bool finite = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
+    for (const Vec2 a : ring) {
       finite = finite && std::isfinite(a.x) && std::isfinite(a.y);
       scale_ = std::max({scale_, std::abs(a.x), std::abs(a.y)});
-      if (i % kRun == 0) runs_.push_back(kEmpty);
-      if (i % (kRun * kRunsOfRun) == 0) groups_.push_back(kEmpty);
-      for (Box* box : {&runs_.back(), &groups_.back()}) {
-        box->low = glm::min(box->low, glm::min(a, b));
-        box->high = glm::max(box->high, glm::max(a, b));
-      }
     }
     use_runs_ = finite && n >= 64;
+    if (!use_runs_) return;
+    runs_.build(n, kEmpty, [&](Box& box, std::size_t i) {
+      const Vec2 a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
+      box.low = glm::min(box.low, glm::min(a, b));
+      box.high = glm::max(box.high, glm::max(a, b));
+    });
   }
 
   // As squared_distance_and_edge(p, ring), with the edge's index; hint: an edge to measure first.
@@ -65,14 +65,10 @@ class NearestEdges {
       const double dy = std::max({box.low.y - p.y, 0.0, p.y - box.high.y});
       return std::sqrt(dx * dx + dy * dy) > std::sqrt(best) * (1 + 1e-12) + margin;
     };
-    for (std::size_t group = 0; group < groups_.size(); ++group) {
-      if (beyond(groups_[group])) continue;
-      const std::size_t last_run = std::min(runs_.size(), (group + 1) * kRunsOfRun);
-      for (std::size_t run = group * kRunsOfRun; run < last_run; ++run) {
-        if (beyond(runs_[run])) continue;
-        for (std::size_t i = run * kRun, end = std::min(n, i + kRun); i < end; ++i) measure(i);
-      }
-    }
+    runs_.for_each(beyond, [&](std::size_t i) {
+      measure(i);
+      return true;
+    });
     return {best, at};
   }
 
@@ -80,11 +76,10 @@ class NearestEdges {
   struct Box {
     Vec2 low, high;
   };
-  static constexpr std::size_t kRun = 16, kRunsOfRun = 16;
   static constexpr Box kEmpty{Vec2{std::numeric_limits<double>::infinity()},
                               Vec2{-std::numeric_limits<double>::infinity()}};
   const Ring& ring_;
-  std::vector<Box> runs_, groups_;
+  Runs<Box> runs_;
   double scale_ = 0;
   bool use_runs_ = false;
 };
