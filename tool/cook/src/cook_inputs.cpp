@@ -132,11 +132,10 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
           // An asset moved or renamed under its link: left out, the game would miss it.
           throw InputError(it->path().string() + ": a broken symbolic link (to " +
                            std::filesystem::read_symlink(it->path(), entry_error).string() + ")");
-        } else if (is_image_file(it->path()) && it->exists(entry_error) &&
-                   !it->is_directory(entry_error)) {
+        } else if (is_image_file(it->path())) {
           // A pipe or a device named as an image: left out, the game would miss an asset; read,
           // it may block or never end.
-          throw InputError(it->path().string() + ": not a regular file or a directory");
+          refuse_unless_regular_file(it->path());
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());

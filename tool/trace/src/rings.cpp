@@ -10,7 +10,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -87,6 +86,16 @@ struct Segment {
   int to;
 };
 
+// The box of some points: empty until one is added.
+struct Box {
+  Vec2 low{std::numeric_limits<double>::max()};
+  Vec2 high{std::numeric_limits<double>::lowest()};
+  void add(Vec2 p) { low = glm::min(low, p), high = glm::max(high, p); }
+  bool holds(Vec2 p) const {
+    return low.x <= p.x && p.x <= high.x && low.y <= p.y && p.y <= high.y;
+  }
+};
+
 class Simplifier {
  public:
   // Each ring is first simplified on its own, on up to threads threads (the rings' results do
@@ -159,11 +168,6 @@ class Simplifier {
   // Ranges of at least this many vertices are searched by blocks of kBlock (farthest_in_blocks).
   static constexpr int kBlockedRange = 4096;
   static constexpr int kBlock = 128;
-  struct Box {
-    Vec2 low{std::numeric_limits<double>::max()};
-    Vec2 high{std::numeric_limits<double>::lowest()};
-  };
-
   int size(int ring) const { return static_cast<int>(rings_[ring].size()); }
   int interior_count(const Segment& s) const {
     return (s.to - s.from - 1 + size(s.ring)) % size(s.ring);
@@ -178,8 +182,7 @@ class Simplifier {
       std::vector<Box>& boxes = boxes_[r];
       boxes.assign((n + kBlock - 1) / kBlock, Box{});
       for (int i = 0; i < n; ++i) {
-        Box& box = boxes[i / kBlock];
-        box.low = glm::min(box.low, ring[i]), box.high = glm::max(box.high, ring[i]);
+        boxes[i / kBlock].add(ring[i]);
       }
     }
     keep_[r].assign(n, eps_ > 0 ? 0 : 1);
@@ -712,22 +715,14 @@ std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vect
       // by another hole, an island of which the leftward ray meets first). It encloses the ring,
       // so its box holds the ring's vertices: every such ring is restored.
       if (!restored && !wrong.empty()) {
-        std::vector<std::array<double, 4>> boxes(result.size());
+        std::vector<Box> boxes(result.size());
         for (std::size_t s = 0; s < result.size(); ++s) {
-          std::array<double, 4>& box = boxes[s];
-          box = {result[s][0].x, result[s][0].x, result[s][0].y, result[s][0].y};
-          for (const Vec2& v : result[s]) {
-            box = {std::min(box[0], v.x), std::max(box[1], v.x), std::min(box[2], v.y),
-                   std::max(box[3], v.y)};
-          }
+          for (const Vec2& v : result[s]) boxes[s].add(v);
         }
         for (int r : wrong) {
           const Vec2 p = result[static_cast<std::size_t>(r)][0];
           for (std::size_t s = 0; s < result.size(); ++s) {
-            const std::array<double, 4>& box = boxes[s];
-            if (box[0] <= p.x && p.x <= box[1] && box[2] <= p.y && p.y <= box[3]) {
-              restored |= simplifier.restore(static_cast<int>(s));
-            }
+            if (boxes[s].holds(p)) restored |= simplifier.restore(static_cast<int>(s));
           }
         }
         // Never seen, but the rings as traced are nested right: the last resort is all of them.
