@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     definition.position.Set(p.x, p.y);
     b2Body* body = world.CreateBody(&definition);
     b2FixtureDef fixture;
-    fixture.density = 1.0f;
+    fixture.density = samples::unit_mass_density(p, options.scale);
     fixture.friction = 0.6f;
     altered +=
         box2d::create_fixtures(body, p.asset, p.level, fixture, {options.scale, false}).altered;

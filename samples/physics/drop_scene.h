@@ -89,6 +89,18 @@ struct Placed {
   float x = 0, y = 0;  // [game units] the body's origin
 };
 
+// The density [kg per game unit²] that gives the body of a placed asset a mass of 1 kg (its
+// hulls' areas summed; they overlap by little). Box2D's solver handles mass ratios up to about
+// 10:1: a sprite sheet of hundreds of hulls weighs thousands of times a small sprite, and a pile
+// of such sheets on small sprites kept creeping, or pressed a sprite into its neighbour, by as
+// much as the hulls' shapes happened to allow.
+inline float unit_mass_density(const Placed& p, float scale) {
+  double area = 0;
+  for (std::size_t h = 0; h < p.level.hull_count(); ++h) area += p.level.hull(h).area();
+  area *= static_cast<double>(scale) * scale;
+  return area > 0 ? static_cast<float>(1.0 / area) : 1.0f;
+}
+
 inline bool is_terrain(const Options& options, const runtime::Asset& asset) {
   const std::string name(asset.name());
   if (!options.terrain.empty())

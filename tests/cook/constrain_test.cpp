@@ -175,6 +175,38 @@ TEST(Issue16, HullPointBeyondTauAfterMaxVertsIsNotKept) {
   expect_pieces_contract(pieces, {Region{piece, {}}}, 4.0, limits);
 }
 
+// A rough disc: n vertices at radius radius, each moved in or out by up to roughness (seeded).
+Ring rough_disc(std::size_t n, double radius, double roughness, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-roughness, roughness);
+  Ring ring = regular_polygon(n, radius);
+  for (Vec2& v : ring) v *= (radius + offset(random)) / radius;
+  return ring;
+}
+
+// A traced ball is one piece within τ whose hull needs more than 8 vertices. Decomposing it
+// finer cut the notches of its rim (a fraction of τ deep) into slivers of their own: a 512 px
+// disc became 154 hulls, a 1600 px one up to 496. Halving it along a diagonal gives a few hulls.
+// Each hull edge is within τ of the rim, so one meets at most a chord of 2 sqrt(2 R (2 τ)) of
+// it, and a hull of 8 vertices at most 7 such chords: the bound below is 4 times that count.
+TEST(EngineLimits, RoundPieceIsHalvedIntoFewHullsNotCutIntoSlivers) {
+  const EngineLimits limits{8, 0.005};
+  const double tau = 2.0;
+  for (const auto& [radius, vertices] :
+       std::vector<std::pair<double, std::size_t>>{{50, 200}, {200, 600}, {800, 2000}}) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      SCOPED_TRACE("radius " + std::to_string(radius) + ", seed " + std::to_string(seed));
+      const Ring disc = rough_disc(vertices, radius, 0.3, seed);
+      const std::vector<CookedPiece> decomposed = decompose_at(Region{disc, {}}, tau);
+      ASSERT_EQ(decomposed.size(), 1u);
+      auto pieces = apply_engine_limits(decomposed, tau, limits, decompose_at, "disc");
+      expect_pieces_contract(pieces, {Region{disc, {}}}, tau, limits);
+      const double chords = 2 * M_PI * radius / (2 * std::sqrt(2 * radius * 2 * tau));
+      EXPECT_LE(pieces.size(), 4 * std::ceil(chords / 7));
+    }
+  }
+}
+
 // Issue 16: at 100 px per unit (weld 0.005 = 0.5 px) a sliver 0.03 px thin along a cut was left
 // out of the hulls, and the pieces' areas no longer added up to the outline's. It is merged into
 // the neighbour it shares the cut with.

@@ -564,10 +564,10 @@ TEST(Contract, SidesOfNearlyCollinearVerticesCutIntoTrianglesAreAnInputError) {
 // A review of the τ 0 rule for notches no deeper than the contract's slack (left where only
 // slivers resolve them): a 12-vertex piece of a rectangle's side, 25 long and 4e-3 wide, 1e6 from
 // the origin, keeps such a notch at τ 0 and its hull of 10 vertices exceeds --max-verts 8; the
-// constrainer found no convex piece to halve and threw an internal error (exit 4). It is the
-// input's (no split of it avoids slivers): an InputError that says what to raise. With
-// --max-verts 12 it cooks within the contract.
-TEST(Contract, NotchWithinTheSlackOverMaxVertsIsAnInputError) {
+// constrainer found no convex piece to halve and threw an internal error (exit 4), then refused
+// it as input. Pieces that are not convex are now halved along a diagonal too: it cooks within
+// the contract at --max-verts 8, as at 12.
+TEST(Contract, NotchWithinTheSlackOverMaxVertsIsHalvedAlongADiagonal) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "hullcook_contract_notch_far_from_origin.poly";
   {
@@ -592,12 +592,13 @@ TEST(Contract, NotchWithinTheSlackOverMaxVertsIsAnInputError) {
   Settings settings;
   settings.tau = Tolerance{0.0, false};
   settings.weld = 0.0;
-  expect_refused_for_slivers(file, settings, "into hulls of at most 8 vertices");
-  settings.max_verts = 12;
-  CookedAsset asset;
-  ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0));
-  const std::vector<std::string> violations = violations_of(asset, EngineLimits{12, 0.0});
-  EXPECT_TRUE(violations.empty()) << listed(violations);
+  for (std::size_t max_verts : {std::size_t{8}, std::size_t{12}}) {
+    settings.max_verts = max_verts;
+    CookedAsset asset;
+    ASSERT_NO_THROW(asset = cook({file}, settings).assets.at(0));
+    const std::vector<std::string> violations = violations_of(asset, EngineLimits{max_verts, 0.0});
+    EXPECT_TRUE(violations.empty()) << max_verts << listed(violations);
+  }
   std::filesystem::remove(file);
 }
 

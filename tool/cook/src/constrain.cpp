@@ -9,6 +9,7 @@
 #include "hullcook/cook/contract.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -105,6 +106,54 @@ std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon, double sl
   return std::nullopt;
 }
 
+// Whether the segment from ring[i] to ring[j] lies inside the simple counter-clockwise ring but
+// for its ends (exact): it leaves each end into the interior angle there, and it meets no edge
+// that does not end at i or j.
+bool is_inner_diagonal(const Ring& ring, std::size_t i, std::size_t j) {
+  const std::size_t n = ring.size();
+  auto into_interior = [&](std::size_t at, Vec2 toward) {
+    const Vec2 before = ring[(at + n - 1) % n], p = ring[at], after = ring[(at + 1) % n];
+    if (orientation(p, after, before) >= 0) {
+      return orientation(p, toward, before) > 0 && orientation(toward, p, after) > 0;
+    }
+    return !(orientation(p, toward, after) >= 0 && orientation(toward, p, before) >= 0);
+  };
+  if (!into_interior(i, ring[j]) || !into_interior(j, ring[i])) return false;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t next = (k + 1) % n;
+    if (k == i || k == j || next == i || next == j) continue;
+    if (segments_intersect(ring[i], ring[j], ring[k], ring[next])) return false;
+  }
+  return true;
+}
+
+// Splits a ring that is not convex along its shortest inner diagonal between vertices halfway
+// round from each other (of up to 32 evenly spaced starts), into halves that the contract does
+// not call slivers. A nearly convex component, such as a traced disc, then needs about half the
+// hull vertices on each side; decomposing it finer instead cut its rim's notches of a fraction
+// of τ into slivers of their own: 154 hulls for a 512 px disc at --max-verts 8.
+std::optional<std::pair<Ring, Ring>> halve_along_diagonal(const Ring& ring, double slack) {
+  const std::size_t n = ring.size();
+  if (n < 4) return std::nullopt;
+  const std::size_t starts = std::min<std::size_t>(n / 2, 32);
+  std::optional<std::size_t> best;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t s = 0; s < starts; ++s) {
+    const std::size_t i = s * (n / 2) / starts, j = i + n / 2;
+    const double length = glm::length(ring[j] - ring[i]);
+    if (length < shortest && is_inner_diagonal(ring, i, j)) shortest = length, best = i;
+  }
+  if (!best) return std::nullopt;
+  Region first, second;
+  for (std::size_t k = *best; k <= *best + n / 2; ++k) first.outer.push_back(ring[k]);
+  for (std::size_t k = *best + n / 2; k <= *best + n; ++k) second.outer.push_back(ring[k % n]);
+  if (!(signed_area(first.outer) > 0) || !(signed_area(second.outer) > 0) ||
+      is_contract_sliver(first, slack) || is_contract_sliver(second, slack)) {
+    return std::nullopt;
+  }
+  return std::pair{std::move(first.outer), std::move(second.outer)};
+}
+
 // A vertex's position, as a key for the depths it was allowed before a merge.
 using VertexKey = std::pair<double, double>;
 
@@ -191,6 +240,47 @@ class Constrainer {
       out.push_back({.piece = std::move(piece), .hull = std::move(*hull), .placed = true});
       return;
     }
+    // Of the two ways to split a piece without holes, the one that gives fewer hulls, all
+    // placed: finer decompositions (below), or halving along a diagonal (then halves are only
+    // halved again). Halving is tried only where decomposing finer gives more than two slots or
+    // leaves one unplaced, so most pieces keep the hulls they had.
+    const std::uint32_t region = piece.region;
+    std::optional<Region> component;
+    if (depth < 3 && piece.component.holes.empty() && !is_small(piece)) {
+      component = piece.component;
+    }
+    const std::size_t first = out.size();
+    split(std::move(piece), depth, out);
+    if (!component) return;
+    auto unplaced = [](const Slot& slot) { return !slot.placed; };
+    const bool some_unplaced = std::any_of(out.begin() + first, out.end(), unplaced);
+    if (out.size() - first <= 2 && !some_unplaced) return;
+    std::vector<Slot> halved;
+    if (!halve(*component, region, halved) || std::any_of(halved.begin(), halved.end(), unplaced) ||
+        !(halved.size() < out.size() - first || some_unplaced)) {
+      return;
+    }
+    out.resize(first);
+    std::move(halved.begin(), halved.end(), std::back_inserter(out));
+  }
+
+  // Adds to out the slots of the halves of component (without holes, not convex; see
+  // halve_along_diagonal), each decomposed at τ and then only halved further; false when no
+  // diagonal halves it.
+  bool halve(const Region& component, std::uint32_t region, std::vector<Slot>& out) const {
+    auto halves = halve_along_diagonal(component.outer, slack_);
+    if (!halves) return false;
+    for (Ring* half : {&halves->first, &halves->second}) {
+      for (CookedPiece& part : split_(Region{std::move(*half), {}}, tau_)) {
+        part.region = region;
+        add(std::move(part), 3, out);
+      }
+    }
+    return true;
+  }
+
+  // add's splits of a piece no hull fits: finer decompositions from depth on, then halves.
+  void split(CookedPiece piece, int depth, std::vector<Slot>& out) const {
     // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
     bool splits_into_slivers = false;
     if (!is_small(piece)) {
@@ -216,9 +306,10 @@ class Constrainer {
           return;
         }
       } else if (piece.component.holes.empty()) {
-        // Left whole at τ 0: a notch no deeper than the contract's slack, which only cuts that
-        // leave slivers resolve (see resolve_notch); at 1e6 from the origin a piece 25 long and
-        // 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
+        // A half (see halve), or left whole at τ 0: a notch no deeper than the contract's slack,
+        // which only cuts that leave slivers resolve (see resolve_notch); at 1e6 from the origin
+        // a piece 25 long and 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
+        if (halve(piece.component, piece.region, out)) return;
         splits_into_slivers = true;
       }
     }
