@@ -156,6 +156,66 @@ TEST(Box2d, EveryHullIsAcceptedUnchanged) {
   }
 }
 
+// A review (hunt of stop 49): b2PolygonShape::Set asserts (SIGABRT in Debian's Box2D) when fewer
+// than 3 vertices stay apart at its weld distance. A sprite placed at a tenth of the scale its
+// bundle was cooked for, or cooked with --weld 0, killed the game instead of being refused.
+TEST(Box2d, ReviewHullsBox2dWouldAssertOnAreSkippedNotSet) {
+  Scene scene;
+  b2BodyDef definition;
+  definition.type = b2_dynamicBody;
+  b2Body* body = scene.world.CreateBody(&definition);
+  const runtime::Asset house = scene.bundle.find("props/house.png");
+  const runtime::Level level = house.level(0);
+  b2FixtureDef fixture;
+  fixture.density = 1.0f;
+  // 1e-3 m across: every hull is within Box2D's weld distance of a point.
+  const runtime::Placement tiny{1e-3f, false};
+  for (std::size_t h = 0; h < level.hull_count(); ++h) {
+    EXPECT_FALSE(box2d::takes_polygon(level.hull(h), tiny)) << h;
+    b2PolygonShape shape;
+    shape.SetAsBox(1.0f, 2.0f);
+    EXPECT_FALSE(box2d::set_polygon(level.hull(h), shape, tiny)) << h;
+    EXPECT_EQ(shape.m_count, 4) << "left as it was";
+    EXPECT_TRUE(box2d::takes_polygon(level.hull(h))) << h;
+  }
+  box2d::FixtureReport report = box2d::create_fixtures(body, house, level, fixture, tiny);
+  EXPECT_EQ(report.created, 0u);
+  EXPECT_EQ(report.skipped, level.hull_count());
+  EXPECT_EQ(body->GetFixtureList(), nullptr);
+  // A flat hull: three vertices apart, on one line, and a sliver thinner than the weld.
+  const std::vector<Ring> flat{{{0, 0}, {1, 0}, {2, 0}, {1, 1e-4}}, {{0, 0}, {1, 0}, {0.5, 1e-4}}};
+  const std::string bytes = write_bundle({test::scene_asset("flat", flat, 0.0)});
+  Bundle bundle;
+  if (bundle.open(bytes.data(), bytes.size()) == Status::ok) {
+    const runtime::Asset asset = bundle.find("flat");
+    report = box2d::create_fixtures(body, asset, asset.level(0), fixture);
+    EXPECT_EQ(report.created + report.skipped, asset.level(0).hull_count());
+  }
+  // Each scale that a sample sprite survives gives it every hull.
+  report = box2d::create_fixtures(body, house, level, fixture, {0.5f, true});
+  EXPECT_EQ(report.skipped, 0u);
+  EXPECT_EQ(report.created, level.hull_count());
+}
+
+// A review (hunt of stop 49): the asset's density is in kg per output unit², as the Chipmunk
+// adapter reads it; the Box2D adapter gave it to the fixtures unconverted, so a body placed at
+// scale 2 weighed 4 times as much (and at 0.5, a quarter).
+TEST(Box2d, ReviewTheAssetsDensityIsConvertedWithThePlacementScale) {
+  Scene scene;
+  const runtime::Asset house = scene.bundle.find("props/house.png");
+  ASSERT_TRUE(house.has_physics());
+  double mass_at_1 = 0;
+  for (float scale : {1.0f, 2.0f, 0.5f}) {
+    b2BodyDef definition;
+    definition.type = b2_dynamicBody;
+    b2Body* body = scene.world.CreateBody(&definition);
+    box2d::create_fixtures(body, house, house.level(0), b2FixtureDef{}, {scale, false});
+    if (scale == 1.0f) mass_at_1 = body->GetMass();
+    EXPECT_NEAR(body->GetMass(), mass_at_1, 1e-4 * mass_at_1) << scale;
+  }
+  EXPECT_GT(mass_at_1, 0.0);
+}
+
 TEST(Box2d, PlacementScalesAndMirrorsBodies) {
   Scene scene;
   b2BodyDef definition;

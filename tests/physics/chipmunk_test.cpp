@@ -117,6 +117,26 @@ TEST(Chipmunk, MassMomentAndCentroidFromTheHullsMatchTheSilhouette) {
   }
 }
 
+// A review (hunt of stop 49): add_shapes gave Chipmunk the first 64 vertices of a hull of more
+// (a bundle cooked with --max-verts 0), and Chipmunk made a smaller hull of them.
+TEST(Chipmunk, ReviewHullsOfHundredsOfVerticesKeepEveryVertex) {
+  const std::vector<Ring> hulls{test::regular_polygon({0, 0}, 5.0, 65),
+                                test::regular_polygon({20, 0}, 5.0, 300)};
+  const std::string bytes = write_bundle({test::scene_asset("round", hulls, 0.0)});
+  Bundle bundle;
+  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  Scene scene;
+  cpBody* body = cpSpaceAddBody(scene.space, cpBodyNew(0, 0));
+  const runtime::Asset asset = bundle.find("round");
+  const chipmunk::ShapeReport report =
+      chipmunk::add_shapes(scene.space, body, asset, asset.level(0));
+  EXPECT_EQ(report.created, 2u);
+  EXPECT_EQ(report.altered, 0u);
+  EXPECT_EQ(report.skipped, 0u);
+  const double area = test::ring_area(hulls[0]) + test::ring_area(hulls[1]);
+  EXPECT_NEAR(report.area, area, 1e-4 * area);  // the bundle's grid rounds the vertices
+}
+
 TEST(Chipmunk, EveryHullIsAcceptedUnchanged) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -1,5 +1,8 @@
 #include "hullcook/chipmunk.h"
 
+#include <memory>
+#include <new>
+
 namespace hullcook::chipmunk {
 
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
@@ -22,15 +25,26 @@ ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset
   }
   for (std::size_t h = 0; h < level.hull_count(); ++h) {
     const runtime::Hull hull = level.hull(h);
-    runtime::Vec2 points[runtime::kMaxStackVertices];
-    const std::size_t count =
-        hull.copy_vertices(points, runtime::kMaxStackVertices, options.placement);
-    const std::size_t used =
-        count < runtime::kMaxStackVertices ? count : runtime::kMaxStackVertices;
-    cpVect vertices[runtime::kMaxStackVertices];
-    for (std::size_t i = 0; i < used; ++i) vertices[i] = cpv(points[i].x, points[i].y);
-    cpShape* shape =
-        cpPolyShapeNew(body, static_cast<int>(used), vertices, cpTransformIdentity, options.radius);
+    const std::size_t count = hull.vertex_count();
+    // Most hulls fit on the stack; a hull of --max-verts 0 may have hundreds of vertices (only
+    // the first 64 were given, and Chipmunk made a smaller hull of them).
+    cpVect on_stack[runtime::kMaxStackVertices];
+    std::unique_ptr<cpVect[]> on_heap;
+    cpVect* vertices = on_stack;
+    if (count > runtime::kMaxStackVertices) {
+      on_heap.reset(new (std::nothrow) cpVect[count]);
+      if (!on_heap) {
+        ++report.skipped;
+        continue;
+      }
+      vertices = on_heap.get();
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      const runtime::Vec2 p = hull.placed_vertex(i, options.placement);
+      vertices[i] = cpv(p.x, p.y);
+    }
+    cpShape* shape = cpPolyShapeNew(body, static_cast<int>(count), vertices, cpTransformIdentity,
+                                    options.radius);
     if (static_cast<std::size_t>(cpPolyShapeGetCount(shape)) != count) ++report.altered;
     cpShapeSetFriction(shape, friction);
     cpShapeSetElasticity(shape, elasticity);

@@ -1,5 +1,6 @@
 // hullcook::chipmunk: cooked hulls as Chipmunk 7 polygon shapes. Links hullcook::runtime and
-// Chipmunk::Chipmunk. No exceptions; Chipmunk allocates the shapes.
+// Chipmunk::Chipmunk. No exceptions; Chipmunk allocates the shapes, and add_shapes the copy of a
+// hull of more than runtime::kMaxStackVertices vertices (--max-verts 0) that it gives Chipmunk.
 #pragma once
 
 #include "hullcook/runtime.h"
@@ -14,6 +15,7 @@ namespace hullcook::chipmunk {
 struct ShapeReport {
   std::size_t created = 0;  // cpPolyShapes attached to the body, one per hull
   std::size_t altered = 0;  // hulls whose vertex count Chipmunk's own hull changed (expect 0)
+  std::size_t skipped = 0;  // hulls of over 64 vertices whose copy could not be allocated
   double area = 0.0;        // [game units²] total area of the placed hulls
 };
 
@@ -33,7 +35,7 @@ struct ShapeOptions {
 // added to a space, and the space frees nothing, so remove and free the shapes as usual, e.g.
 // with cpBodyEachShape). Each shape gets a density, so that Chipmunk accumulates the body's
 // mass, centre of gravity and moment of inertia from the hulls themselves (set cpBodySetMass/
-// Moment afterwards to // override). The asset's density is in kg per output unit²; it is converted
+// Moment afterwards to override). The asset's density is in kg per output unit²; it is converted
 // to game units with the placement scale. Must not be called while the space is locked (during
 // cpSpaceStep).
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
