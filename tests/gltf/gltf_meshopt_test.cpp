@@ -12,7 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace hullcook {
@@ -57,15 +59,56 @@ void expect_meshopt_file_holds(const std::vector<CookedAsset>& assets, bool bina
       const std::vector<double> values = test::accessor_values(parsed, levels[l]["vertices"]);
       ASSERT_EQ(counts.size(), hulls.size());
       std::size_t next = 0;
+      std::vector<std::size_t> written_counts;
       for (std::size_t h = 0; h < hulls.size(); ++h) {
-        ASSERT_EQ(counts[h], hulls[h].size());
+        // The hull's vertices in order, but those that rounding left repeated, collinear or
+        // reflex: each written vertex is a cooked one rounded, the written ring is strictly
+        // convex and counter-clockwise on the grid and holds every cooked vertex rounded; or,
+        // where the grid flattens the hull to a line or a point, every vertex as it was.
+        ASSERT_LE(counts[h], hulls[h].size());
+        ASSERT_GE(counts[h], 1u);
+        std::vector<std::array<std::int64_t, 2>> ring, rounded;
         for (const Vec2& cooked : hulls[h]) {
-          const Vec2 read{origin.x + step * values.at(next * components),
-                          origin.y + step * values.at(next * components + 1)};
-          EXPECT_LE(std::abs(read.x - cooked.x), 0.5 * step * (1 + 1e-9)) << asset.name;
-          EXPECT_LE(std::abs(read.y - cooked.y), 0.5 * step * (1 + 1e-9)) << asset.name;
-          ++next;
+          rounded.push_back({std::llround((cooked.x - origin.x) / step),
+                             std::llround((cooked.y - origin.y) / step)});
         }
+        std::size_t cooked_index = 0;
+        for (std::size_t k = 0; k < counts[h]; ++k, ++next) {
+          const std::array<std::int64_t, 2> read{std::llround(values.at(next * components)),
+                                                 std::llround(values.at(next * components + 1))};
+          while (cooked_index < rounded.size() && rounded[cooked_index] != read) ++cooked_index;
+          ASSERT_LT(cooked_index, rounded.size()) << asset.name << " hull " << h << ": vertex " << k
+                                                  << " is no cooked vertex, in order";
+          ++cooked_index;
+          ring.push_back(read);
+        }
+        auto cross = [](const auto& p, const auto& q, const auto& r) {
+          return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+        };
+        const std::size_t m = ring.size();
+        bool flat = true;
+        for (std::size_t i = 0; i + 2 < rounded.size(); ++i) {
+          flat = flat && cross(rounded[0], rounded[i + 1], rounded[i + 2]) == 0;
+        }
+        if (flat) {
+          EXPECT_EQ(m, hulls[h].size()) << asset.name << " hull " << h;
+          continue;
+        }
+        double turning = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+          const auto &p = ring[i], &q = ring[(i + 1) % m], &r = ring[(i + 2) % m];
+          EXPECT_GT(cross(p, q, r), 0) << asset.name << " hull " << h << " vertex " << i;
+          turning += std::atan2(double(cross(p, q, r)), double((q[0] - p[0]) * (r[0] - q[0]) +
+                                                               (q[1] - p[1]) * (r[1] - q[1])));
+        }
+        EXPECT_NEAR(turning, 2 * M_PI, 1e-6) << asset.name << " hull " << h;
+        for (const auto& point : rounded) {
+          for (std::size_t i = 0; i < m; ++i) {
+            EXPECT_GE(cross(ring[i], ring[(i + 1) % m], point), 0)
+                << asset.name << " hull " << h << ": a rounded vertex outside";
+          }
+        }
+        written_counts.push_back(m);
       }
       EXPECT_EQ(next * components, values.size());
       if (l != 0) continue;
@@ -82,9 +125,9 @@ void expect_meshopt_file_holds(const std::vector<CookedAsset>& assets, bool bina
       }
       const std::vector<double> indices = test::accessor_values(parsed, primitive["indices"]);
       std::vector<std::size_t> first{0};
-      for (const Ring& hull : hulls) first.push_back(first.back() + hull.size());
+      for (double count : counts) first.push_back(first.back() + std::size_t(count));
       std::size_t fan_triangles = 0;
-      for (const Ring& hull : hulls) fan_triangles += hull.size() >= 3 ? hull.size() - 2 : 0;
+      for (double count : counts) fan_triangles += count >= 3 ? std::size_t(count) - 2 : 0;
       EXPECT_EQ(indices.size(), 3 * fan_triangles) << asset.name;
       for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         const auto h = std::upper_bound(first.begin(), first.end(), std::size_t(indices[t])) -
@@ -104,6 +147,17 @@ TEST(GltfMeshopt, HandMadeAssetsWithinHalfAStep) {
 
 TEST(GltfMeshopt, SampleSpritesWithinHalfAStep) {
   expect_meshopt_file_holds(test::sample_sprites({Tolerance{8.0, false}}), true);
+}
+
+// A review (hunt of stop 49): at --tau 0.5 (1 px per unit) rounding to the grid left 20 hulls of
+// the sample sprites with a reflex vertex, where the documentation promised at most a collinear
+// one; 981 of the 3,322 real sprites' 233,623 hulls. Such vertices are now left out.
+TEST(GltfMeshopt, ReviewRoundingLeavesNoReflexVertex) {
+  Settings settings;
+  settings.tau = Tolerance{0.5, false};
+  expect_meshopt_file_holds(
+      cook({std::filesystem::path(HULLCOOK_SOURCE_DIR) / "samples/sprites"}, settings).assets,
+      true);
 }
 
 // Where the extent sets the step (extent / 65 000), extent / step can come back a few ulps over

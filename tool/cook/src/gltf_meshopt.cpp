@@ -47,6 +47,51 @@ std::int16_t Quantization::y(double value) const {
   return static_cast<std::int16_t>(std::lround((value - origin.y) / step));
 }
 
+Ring Quantization::held(const Ring& hull) const {
+  struct GridPoint {
+    std::int64_t x, y;
+  };
+  std::vector<GridPoint> rounded;
+  rounded.reserve(hull.size());
+  for (const Vec2& v : hull) rounded.push_back({x(v.x), y(v.y)});
+  auto turns_left = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const GridPoint p = rounded[a], q = rounded[b], r = rounded[c];
+    return (q.x - p.x) * (r.y - q.y) - (q.y - p.y) * (r.x - q.x) > 0;  // exact: |values| < 2^17
+  };
+  // Leaving out a vertex that does not turn left keeps it in the ring (on or inside the new
+  // edge), so once every vertex turns left the ring holds all of them.
+  std::vector<std::size_t> kept(hull.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = i;
+  for (bool changed = true; changed && kept.size() >= 3;) {
+    changed = false;
+    for (std::size_t k = 0; k < kept.size() && kept.size() >= 3;) {
+      const std::size_t m = kept.size();
+      if (turns_left(kept[(k + m - 1) % m], kept[k], kept[(k + 1) % m])) {
+        ++k;
+      } else {
+        kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+        changed = true;
+      }
+    }
+  }
+  if (kept.size() < 3 || kept.size() == hull.size()) return hull;
+  // Turning left at every vertex, it is convex if it winds once (a sum of exterior angles of 2π,
+  // not 4π or more).
+  double turning = 0;
+  for (std::size_t k = 0, m = kept.size(); k < m; ++k) {
+    const GridPoint p = rounded[kept[k]], q = rounded[kept[(k + 1) % m]],
+                    r = rounded[kept[(k + 2) % m]];
+    const double ax = double(q.x - p.x), ay = double(q.y - p.y);
+    const double bx = double(r.x - q.x), by = double(r.y - q.y);
+    turning += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+  if (!(turning < 3 * M_PI)) return hull;
+  Ring out;
+  out.reserve(kept.size());
+  for (std::size_t i : kept) out.push_back(hull[i]);
+  return out;
+}
+
 std::string meshopt_compress(std::string_view data, std::size_t stride, MeshoptMode mode) {
   std::string problem;
   const MeshoptLibrary* meshopt = meshopt_library(&problem);

@@ -21,6 +21,12 @@ struct Quantization {
   static Quantization of(const CookedAsset& asset);
   std::int16_t x(double value) const;
   std::int16_t y(double value) const;
+
+  // hull (convex, counter-clockwise) without the vertices that rounding to the grid leaves
+  // repeated, collinear or reflex: what is left rounds to a strictly convex counter-clockwise
+  // ring of grid points that holds every rounded vertex. hull itself when rounding keeps it
+  // convex, or when it flattens it to a line or a point (a hull narrower than the step).
+  Ring held(const Ring& hull) const;
 };
 
 // A bufferView's data compressed by meshoptimizer, as EXT_meshopt_compression decodes it.

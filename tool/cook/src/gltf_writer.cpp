@@ -179,6 +179,22 @@ std::optional<CookedAsset> held_by_floats(const CookedAsset& asset) {
   return held;
 }
 
+// The asset with each hull as the grid holds it (Quantization::held), or nullopt when rounding
+// keeps every hull convex.
+std::optional<CookedAsset> held_on_grid(const CookedAsset& asset, const Quantization& grid) {
+  std::optional<CookedAsset> held;
+  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+    const std::vector<Ring>& hulls = asset.levels[l].hulls;
+    for (std::size_t h = 0; h < hulls.size(); ++h) {
+      Ring kept = grid.held(hulls[h]);
+      if (kept.size() == hulls[h].size()) continue;
+      if (!held) held = asset;
+      held->levels[l].hulls[h] = std::move(kept);
+    }
+  }
+  return held;
+}
+
 json physics_json(const PhysicsProperties& physics) {
   return {
       {"density", float_json(physics.density)},         {"friction", float_json(physics.friction)},
@@ -675,24 +691,27 @@ int add_asset(Document& document, const CookedAsset& cooked) {
   const int node_index = document.add_node({{"name", asset.name}});
   json extras = asset_extras(asset);
   std::optional<Quantization> grid;
+  std::optional<CookedAsset> on_grid;  // the asset's hulls as held on the grid, where they differ
   if (document.options().meshopt) {
     // KHR_mesh_quantization: the node's transform maps the grid to output units, for the mesh
     // and the extras' vertices alike.
     grid = Quantization::of(asset);
     document.node(node_index)["translation"] = {grid->origin.x, grid->origin.y, 0.0};
     document.node(node_index)["scale"] = {grid->step, grid->step, grid->step};
+    on_grid = held_on_grid(asset, *grid);
   }
+  const CookedAsset& written = on_grid ? *on_grid : asset;
   json levels = json::array();
-  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+  for (std::size_t l = 0; l < written.levels.size(); ++l) {
     std::optional<int> vertices;
     if (l == 0) {
-      const TriangleMesh mesh = flat_mesh(asset.levels[0].hulls, asset.name);
+      const TriangleMesh mesh = flat_mesh(written.levels[0].hulls, asset.name);
       if (!mesh.indices.empty()) {
         int positions = -1;
         json primitive =
             document.options().draco
                 ? draco_primitive(document, mesh, asset.name)
-                : plain_primitive(document, mesh, asset.levels[0].hulls, grid, positions);
+                : plain_primitive(document, mesh, written.levels[0].hulls, grid, positions);
         // Without Draco, the mesh's positions are the finest level's vertices (z = 0).
         if (positions >= 0) vertices = positions;
         const int mesh_index = document.add_mesh(std::move(primitive));
@@ -700,7 +719,7 @@ int add_asset(Document& document, const CookedAsset& cooked) {
         add_colliders(document, asset, node_index, mesh_index);
       }
     }
-    levels.push_back(level_json(document, asset.levels[l], vertices, grid));
+    levels.push_back(level_json(document, written.levels[l], vertices, grid));
   }
   extras["levels"] = std::move(levels);
   document.node(node_index)["extras"] = {{"hullcook", std::move(extras)}};
