@@ -2,6 +2,7 @@
 #include "hull_fitter.h"
 #include "mend_queue.h"
 #include "outline_distance.h"
+#include "piece_merge.h"
 
 #include "hullcook/cook/constrain.h"
 #include "hullcook/core/decompose.h"
@@ -205,6 +206,32 @@ TEST(EngineLimits, RoundPieceIsHalvedIntoFewHullsNotCutIntoSlivers) {
       EXPECT_LE(pieces.size(), 4 * std::ceil(chords / 7));
     }
   }
+}
+
+// Pieces merge along a shared stretch of boundary, also one whose ends are vertices of only one
+// of them (T-junctions, as further cuts on one side leave them), and not where they meet at a
+// point: merge_components refuses those before it builds anything (meet_at_two_points), since a
+// fan of thin triangles asked it millions of times.
+TEST(PieceMerge, PiecesMergeAlongAStretchNotAtAPoint) {
+  const Region square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}};
+  const std::optional<Region> edge = merge_components(square, Region{{{2, 0}, {3, 1}, {2, 2}}, {}});
+  ASSERT_TRUE(edge);
+  EXPECT_NEAR(test::region_area(*edge), 5.0, 1e-12);
+  EXPECT_FALSE(merge_components(square, Region{{{2, 2}, {3, 2.5}, {2.5, 3}}, {}}));
+  // The triangle's base lies inside the bar's top edge: no vertex is shared.
+  const Region bar{{{0, 0}, {4, 0}, {4, 1}, {0, 1}}, {}};
+  const std::optional<Region> inside = merge_components(bar, Region{{{1, 1}, {3, 1}, {2, 2}}, {}});
+  ASSERT_TRUE(inside);
+  EXPECT_NEAR(test::region_area(*inside), 5.0, 1e-12);
+  EXPECT_EQ(inside->outer.size(), 7u);
+  // One end of the stretch a vertex of each: the triangle overhangs the bar's corner.
+  const std::optional<Region> staggered =
+      merge_components(bar, Region{{{3, 1}, {5, 1}, {4, 2}}, {}});
+  ASSERT_TRUE(staggered);
+  EXPECT_NEAR(test::region_area(*staggered), 5.0, 1e-12);
+  const std::optional<Region> half = merge_components(bar, Region{{{2, 1}, {4, 1}, {3, 2}}, {}});
+  ASSERT_TRUE(half);
+  EXPECT_NEAR(test::region_area(*half), 5.0, 1e-12);
 }
 
 // Issue 16: at 100 px per unit (weld 0.005 = 0.5 px) a sliver 0.03 px thin along a cut was left
