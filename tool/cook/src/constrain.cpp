@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -159,18 +160,56 @@ using VertexKey = std::pair<double, double>;
 
 class Constrainer {
  public:
-  // slack: the contract's slack for rounding (contract_slack of the pieces' outer rings).
+  // slack: the contract's slack for rounding (contract_slack of the pieces' outer rings);
+  // halving: whether a piece may be halved along a diagonal where it is not convex (see add).
   Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split, double slack,
-              double merge_width)
-      : tau_(tau), limits_(limits), split_(split), slack_(slack), merge_width_(merge_width) {}
+              double merge_width, bool halving)
+      : tau_(tau),
+        limits_(limits),
+        split_(split),
+        slack_(slack),
+        merge_width_(merge_width),
+        halving_(halving) {}
+
+  // Whether some piece was split where halving could have been tried instead (without
+  // halving: whether placing the pieces with halving could give other hulls).
+  bool could_halve() const {
+    return std::find(could_halve_.begin(), could_halve_.end(), 1) != could_halve_.end();
+  }
 
   // Places every piece, on up to threads threads: each piece's slots are its own (they depend
   // on it alone) and are joined in the pieces' order, whatever the thread count.
   void add_all(std::vector<CookedPiece> pieces, unsigned threads) {
+    add_all_reusing(nullptr, std::move(pieces), threads);
+  }
+
+  // add_all, taking from without (the same pieces placed without halving, not yet finished) the
+  // slots of each piece that halving would not change.
+  void add_all_reusing(const Constrainer* without, std::vector<CookedPiece> pieces,
+                       unsigned threads) {
+    std::vector<std::size_t> first_slot;
+    if (without) {
+      first_slot.push_back(0);
+      for (std::size_t count : without->slot_count_)
+        first_slot.push_back(first_slot.back() + count);
+    }
+    could_halve_.assign(pieces.size(), 0);
+    slot_count_.assign(pieces.size(), 0);
     // Most pieces are one slot each.
     slots_ = parallel_join<Slot>(
         pieces.size(), threads,
-        [&](std::size_t k, unsigned, std::vector<Slot>& out) { add(std::move(pieces[k]), 0, out); },
+        [&](std::size_t k, unsigned, std::vector<Slot>& out) {
+          const std::size_t before = out.size();
+          if (without && !without->could_halve_[k]) {
+            out.insert(out.end(), without->slots_.begin() + first_slot[k],
+                       without->slots_.begin() + first_slot[k + 1]);
+          } else {
+            bool could_halve = false;
+            add(std::move(pieces[k]), 0, out, could_halve);
+            could_halve_[k] = could_halve;
+          }
+          slot_count_[k] = out.size() - before;
+        },
         kItemsWorthAThread, pieces.size());
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       const std::size_t region = slots_[k].piece.region;
@@ -214,7 +253,7 @@ class Constrainer {
   };
 
   // Appends to out the slots of piece: one, or those of its parts when it is split.
-  void add(CookedPiece piece, int depth, std::vector<Slot>& out) const {
+  void add(CookedPiece piece, int depth, std::vector<Slot>& out, bool& could_halve) const {
     // A sliver at the contract's rounding, which the decomposition takes only when no other cut
     // is valid (between nearly collinear vertices of different rings, in an outline whose slack
     // is coarse beside its size: 1e-4 wide 1e5 from the origin), is merged into a neighbour.
@@ -250,13 +289,16 @@ class Constrainer {
       component = piece.component;
     }
     const std::size_t first = out.size();
-    split(std::move(piece), depth, out);
+    split(std::move(piece), depth, out, could_halve);
     if (!component) return;
     auto unplaced = [](const Slot& slot) { return !slot.placed; };
     const bool some_unplaced = std::any_of(out.begin() + first, out.end(), unplaced);
     if (out.size() - first <= 2 && !some_unplaced) return;
+    could_halve = true;
+    if (!halving_) return;
     std::vector<Slot> halved;
-    if (!halve(*component, region, halved) || std::any_of(halved.begin(), halved.end(), unplaced) ||
+    if (!halve(*component, region, halved, could_halve) ||
+        std::any_of(halved.begin(), halved.end(), unplaced) ||
         !(halved.size() < out.size() - first || some_unplaced)) {
       return;
     }
@@ -267,20 +309,21 @@ class Constrainer {
   // Adds to out the slots of the halves of component (without holes, not convex; see
   // halve_along_diagonal), each decomposed at τ and then only halved further; false when no
   // diagonal halves it.
-  bool halve(const Region& component, std::uint32_t region, std::vector<Slot>& out) const {
+  bool halve(const Region& component, std::uint32_t region, std::vector<Slot>& out,
+             bool& could_halve) const {
     auto halves = halve_along_diagonal(component.outer, slack_);
     if (!halves) return false;
     for (Ring* half : {&halves->first, &halves->second}) {
       for (CookedPiece& part : split_(Region{std::move(*half), {}}, tau_)) {
         part.region = region;
-        add(std::move(part), 3, out);
+        add(std::move(part), 3, out, could_halve);
       }
     }
     return true;
   }
 
   // add's splits of a piece no hull fits: finer decompositions from depth on, then halves.
-  void split(CookedPiece piece, int depth, std::vector<Slot>& out) const {
+  void split(CookedPiece piece, int depth, std::vector<Slot>& out, bool& could_halve) const {
     // A piece thinner than the weld cannot hold an engine hull of its own, nor can its parts.
     bool splits_into_slivers = false;
     if (!is_small(piece)) {
@@ -291,7 +334,7 @@ class Constrainer {
         if (parts.size() > 1) {
           for (CookedPiece& part : parts) {
             part.region = piece.region;
-            add(std::move(part), depth + 1, out);
+            add(std::move(part), depth + 1, out, could_halve);
           }
           return;
         }
@@ -301,7 +344,7 @@ class Constrainer {
           for (Ring* half : {&halves->first, &halves->second}) {
             Ring hull = convex_hull(*half);
             add(CookedPiece{Region{std::move(*half), {}}, std::move(hull), 0.0, piece.region}, 3,
-                out);
+                out, could_halve);
           }
           return;
         }
@@ -309,7 +352,8 @@ class Constrainer {
         // A half (see halve), or left whole at τ 0: a notch no deeper than the contract's slack,
         // which only cuts that leave slivers resolve (see resolve_notch); at 1e6 from the origin
         // a piece 25 long and 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
-        if (halve(piece.component, piece.region, out)) return;
+        if (halving_ && halve(piece.component, piece.region, out, could_halve)) return;
+        could_halve = true;
         splits_into_slivers = true;
       }
     }
@@ -501,6 +545,9 @@ class Constrainer {
   const SplitComponent& split_;
   double slack_;
   double merge_width_;
+  bool halving_;
+  std::vector<char> could_halve_;        // per piece given to add_all: see could_halve
+  std::vector<std::size_t> slot_count_;  // per piece given to add_all: its slots, in order
   std::vector<Slot> slots_;
   std::vector<std::vector<std::size_t>> slots_of_region_;  // ascending, as slots_ are ordered
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
@@ -531,13 +578,36 @@ bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
-                                             unsigned threads, double merge_width) {
+                                             unsigned threads, double merge_width, bool halving) {
   std::vector<const Ring*> rings;
   rings.reserve(pieces.size());
   for (const CookedPiece& piece : pieces) rings.push_back(&piece.component.outer);
-  Constrainer constrainer(tau, limits, split, contract_slack(rings), merge_width);
-  constrainer.add_all(std::move(pieces), threads);
-  return constrainer.finish(source);
+  // Halving a piece that is not convex along a diagonal needs fewer hulls than decomposing it
+  // finer where the finer pieces' rims are cut into slivers (a traced disc: 154 hulls, halved 8),
+  // but more where the slivers merge away afterwards (a rough disc at --max-verts 3: 80, halved
+  // 149), which each piece cannot tell. So the pieces are placed both ways, where halving could
+  // change anything, and the way with fewer hulls is kept (without halving on a tie); so is the
+  // one that succeeds, when the other is refused.
+  const double slack = contract_slack(rings);
+  Constrainer without(tau, limits, split, slack, merge_width, false);
+  without.add_all(pieces, threads);
+  if (!halving || !without.could_halve()) return without.finish(source);
+  Constrainer with(tau, limits, split, slack, merge_width, true);
+  with.add_all_reusing(&without, std::move(pieces), threads);
+  std::optional<std::vector<CookedPiece>> placed;
+  std::exception_ptr refused;
+  try {
+    placed = without.finish(source);
+  } catch (const InputError&) {
+    refused = std::current_exception();
+  }
+  try {
+    std::vector<CookedPiece> halved = with.finish(source);
+    if (!placed || halved.size() < placed->size()) return halved;
+  } catch (const std::exception&) {
+    if (refused) std::rethrow_exception(refused);
+  }
+  return std::move(*placed);
 }
 
 }  // namespace hullcook

@@ -49,8 +49,10 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 // Hulls only grow (edges are removed by extending their neighbours), within tau of their own
 // component: stricter than the outline, it keeps each hull on its piece rather than spread over
 // its neighbours. Or components are split further with split, down to convex pieces and halves
-// of them. split must also measure a component whole: called with tau itself, it returns one
-// piece exactly when the component needs no split.
+// of them, or halved along diagonals where they are not convex: the pieces are placed both ways
+// (where halving could change anything) and the way with fewer hulls is kept (halving: false
+// places them only the first way, for tests). split must also measure a component whole: called
+// with tau itself, it returns one piece exactly when the component needs no split.
 // A piece too small for the weld (thinner than weld, or left so by the splits) is merged into the
 // neighbour it shares the longest cut with, when the merged component is one piece at tau and its
 // hull then meets the limits; otherwise it is given the smallest engine-ready rectangle or
@@ -68,7 +70,8 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
-                                             unsigned threads = 1, double merge_width = 0.0);
+                                             unsigned threads = 1, double merge_width = 0.0,
+                                             bool halving = true);
 
 // True when hull meets the limits' vertex count, weld and collinearity rules and is a convex,
 // counter-clockwise polygon with at least 3 vertices.
