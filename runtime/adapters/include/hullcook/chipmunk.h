@@ -38,6 +38,9 @@ struct ShapeOptions {
 // Moment afterwards to override). The asset's density is in kg per output unit²; it is converted
 // to game units with the placement scale. Must not be called while the space is locked (during
 // cpSpaceStep).
+// Chipmunk's cpPolyShapeNew copies each hull onto the calling thread's stack (alloca, 16 bytes a
+// vertex) to take its hull: a bundle cooked with --max-verts 0 may hold hulls of thousands of
+// vertices, which need that much stack (160 KB for 10,000).
 ShapeReport add_shapes(cpSpace* space, cpBody* body, const runtime::Asset& asset,
                        const runtime::Level& level, const ShapeOptions& options = {});
 
