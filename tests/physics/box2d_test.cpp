@@ -38,6 +38,12 @@ struct Scene {
     return created;
   }
 
+  b2Body* dynamic_body() {
+    b2BodyDef definition;
+    definition.type = b2_dynamicBody;
+    return world.CreateBody(&definition);
+  }
+
   void settle(float seconds) {
     for (int step = 0; step < static_cast<int>(seconds * 60); ++step) world.Step(1.0f / 60, 8, 3);
   }
@@ -130,17 +136,15 @@ TEST(Box2d, EveryHullIsAcceptedUnchanged) {
     hulls.push_back(test::regular_polygon({10 * unit(random), 10 * unit(random)}, radius, sides,
                                           unit(random) * 6.28));
   }
-  CookedAsset asset = test::scene_asset("random", hulls, 0.0);
-  const std::string bytes = write_bundle({asset});
-  Bundle bundle;
-  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
-  const runtime::Level level = bundle.find("random").level(0);
+  const test::HullsBundle random_hulls("random", hulls);
+  ASSERT_TRUE(random_hulls.opened);
+  const runtime::Level level = random_hulls.asset.level(0);
   b2World world(b2Vec2(0, -10));
   b2BodyDef definition;
   b2Body* body = world.CreateBody(&definition);
   b2FixtureDef fixture;
   const box2d::FixtureReport report =
-      box2d::create_fixtures(body, bundle.find("random"), level, fixture);
+      box2d::create_fixtures(body, random_hulls.asset, level, fixture);
   EXPECT_EQ(report.created, hulls.size());
   EXPECT_EQ(report.altered, 0u);
   // And directly: every vertex survives b2PolygonShape::Set, in place (up to rotation).
@@ -161,9 +165,7 @@ TEST(Box2d, EveryHullIsAcceptedUnchanged) {
 // bundle was cooked for, or cooked with --weld 0, killed the game instead of being refused.
 TEST(Box2d, ReviewHullsBox2dWouldAssertOnAreSkippedNotSet) {
   Scene scene;
-  b2BodyDef definition;
-  definition.type = b2_dynamicBody;
-  b2Body* body = scene.world.CreateBody(&definition);
+  b2Body* body = scene.dynamic_body();
   const runtime::Asset house = scene.bundle.find("props/house.png");
   const runtime::Level level = house.level(0);
   b2FixtureDef fixture;
@@ -184,12 +186,11 @@ TEST(Box2d, ReviewHullsBox2dWouldAssertOnAreSkippedNotSet) {
   EXPECT_EQ(body->GetFixtureList(), nullptr);
   // A flat hull: three vertices apart, on one line, and a sliver thinner than the weld.
   const std::vector<Ring> flat{{{0, 0}, {1, 0}, {2, 0}, {1, 1e-4}}, {{0, 0}, {1, 0}, {0.5, 1e-4}}};
-  const std::string bytes = write_bundle({test::scene_asset("flat", flat, 0.0)});
-  Bundle bundle;
-  if (bundle.open(bytes.data(), bytes.size()) == Status::ok) {
-    const runtime::Asset asset = bundle.find("flat");
-    report = box2d::create_fixtures(body, asset, asset.level(0), fixture);
-    EXPECT_EQ(report.created + report.skipped, asset.level(0).hull_count());
+  const test::HullsBundle flat_hulls("flat", flat);
+  if (flat_hulls.opened) {
+    const runtime::Level flat_level = flat_hulls.asset.level(0);
+    report = box2d::create_fixtures(body, flat_hulls.asset, flat_level, fixture);
+    EXPECT_EQ(report.created + report.skipped, flat_level.hull_count());
   }
   // Each scale that a sample sprite survives gives it every hull.
   report = box2d::create_fixtures(body, house, level, fixture, {0.5f, true});
@@ -206,9 +207,7 @@ TEST(Box2d, ReviewTheAssetsDensityIsConvertedWithThePlacementScale) {
   ASSERT_TRUE(house.has_physics());
   double mass_at_1 = 0;
   for (float scale : {1.0f, 2.0f, 0.5f}) {
-    b2BodyDef definition;
-    definition.type = b2_dynamicBody;
-    b2Body* body = scene.world.CreateBody(&definition);
+    b2Body* body = scene.dynamic_body();
     box2d::create_fixtures(body, house, house.level(0), b2FixtureDef{}, {scale, false});
     if (scale == 1.0f) mass_at_1 = body->GetMass();
     EXPECT_NEAR(body->GetMass(), mass_at_1, 1e-4 * mass_at_1) << scale;
@@ -218,9 +217,7 @@ TEST(Box2d, ReviewTheAssetsDensityIsConvertedWithThePlacementScale) {
 
 TEST(Box2d, PlacementScalesAndMirrorsBodies) {
   Scene scene;
-  b2BodyDef definition;
-  definition.type = b2_dynamicBody;
-  b2Body* body = scene.world.CreateBody(&definition);
+  b2Body* body = scene.dynamic_body();
   const runtime::Asset ell = scene.bundle.find("props/ell.png");
   b2FixtureDef fixture;
   fixture.density = 1.0f;

@@ -122,12 +122,11 @@ TEST(Chipmunk, MassMomentAndCentroidFromTheHullsMatchTheSilhouette) {
 TEST(Chipmunk, ReviewHullsOfHundredsOfVerticesKeepEveryVertex) {
   const std::vector<Ring> hulls{test::regular_polygon({0, 0}, 5.0, 65),
                                 test::regular_polygon({20, 0}, 5.0, 300)};
-  const std::string bytes = write_bundle({test::scene_asset("round", hulls, 0.0)});
-  Bundle bundle;
-  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  const test::HullsBundle round("round", hulls);
+  ASSERT_TRUE(round.opened);
+  const runtime::Asset& asset = round.asset;
   Scene scene;
   cpBody* body = cpSpaceAddBody(scene.space, cpBodyNew(0, 0));
-  const runtime::Asset asset = bundle.find("round");
   const chipmunk::ShapeReport report =
       chipmunk::add_shapes(scene.space, body, asset, asset.level(0));
   EXPECT_EQ(report.created, 2u);
@@ -146,12 +145,11 @@ TEST(Chipmunk, EveryHullIsAcceptedUnchanged) {
     hulls.push_back(test::regular_polygon({10 * unit(random), 10 * unit(random)},
                                           0.05 + 1.5 * unit(random), sides, unit(random) * 6.28));
   }
-  const std::string bytes = write_bundle({test::scene_asset("random", hulls, 0.0)});
-  Bundle bundle;
-  ASSERT_EQ(bundle.open(bytes.data(), bytes.size()), Status::ok);
+  const test::HullsBundle random_hulls("random", hulls);
+  ASSERT_TRUE(random_hulls.opened);
+  const runtime::Asset& asset = random_hulls.asset;
   Scene scene;
   cpBody* body = cpSpaceAddBody(scene.space, cpBodyNew(0, 0));
-  const runtime::Asset asset = bundle.find("random");
   EXPECT_EQ(chipmunk::add_shapes(nullptr, body, asset, asset.level(0)).created, 0u);
   const chipmunk::ShapeReport report =
       chipmunk::add_shapes(scene.space, body, asset, asset.level(0));

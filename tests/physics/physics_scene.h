@@ -64,6 +64,19 @@ inline std::string scene_bundle() {
   return write_bundle(assets);
 }
 
+// A bundle of one asset, name, whose one level holds hulls; opened (check opened) and kept with
+// its bytes, which the bundle reads in place.
+struct HullsBundle {
+  HullsBundle(const std::string& name, std::vector<Ring> hulls)
+      : bytes(write_bundle({scene_asset(name, std::move(hulls), 0.0)})),
+        opened(bundle.open(bytes.data(), bytes.size()) == runtime::Status::ok),
+        asset(bundle.find(name)) {}
+  std::string bytes;
+  runtime::Bundle bundle;
+  bool opened;
+  runtime::Asset asset;
+};
+
 inline double ring_area(const Ring& ring) {
   double twice = 0;
   for (std::size_t i = 0; i < ring.size(); ++i) {
