@@ -190,14 +190,18 @@ Ring rough_disc(std::size_t n, double radius, double roughness, unsigned seed) {
 
 // A traced ball is one piece within τ whose hull needs more than 8 vertices. Decomposing it
 // finer cut the notches of its rim (a fraction of τ deep) into slivers of their own: a 512 px
-// disc became 154 hulls, a 1600 px one up to 496. Halving it along a diagonal gives a few hulls.
-// Each hull edge is within τ of the rim, so one meets at most a chord of 2 sqrt(2 R (2 τ)) of
-// it, and a hull of 8 vertices at most 7 such chords: the bound below is 4 times that count.
-TEST(EngineLimits, RoundPieceIsHalvedIntoFewHullsNotCutIntoSlivers) {
+// disc became 154 hulls (stop 49). Halves of halves then gave it up to twice the hulls its rim
+// needs, since each halving adds two vertices to each half and each half is fitted alone (a rough
+// disc of radius 1000: 16 to 20 hulls). It is now cut into slices, each the largest that one hull
+// holds, or halved where the halves are fewer. A hull holds its piece and lies within τ of it, so
+// a hull edge along the rim is at most 2 sqrt(2 R τ) long: the rim needs at least
+// pi sqrt(R / (2 τ)) edges, and a partition of a convex polygon of k vertices into hulls of 8
+// needs (k - 2) / 6 of them. The bound below is 1.5 times that.
+TEST(EngineLimits, RoundPieceIsSlicedIntoAboutAsFewHullsAsItsRimNeeds) {
   const EngineLimits limits{8, 0.005};
   const double tau = 2.0;
-  for (const auto& [radius, vertices] :
-       std::vector<std::pair<double, std::size_t>>{{50, 200}, {200, 600}, {800, 2000}}) {
+  for (const auto& [radius, vertices] : std::vector<std::pair<double, std::size_t>>{
+           {50, 200}, {120, 400}, {250, 800}, {500, 1500}, {800, 2000}, {1000, 3000}}) {
     for (unsigned seed = 1; seed <= 3; ++seed) {
       SCOPED_TRACE("radius " + std::to_string(radius) + ", seed " + std::to_string(seed));
       const Ring disc = rough_disc(vertices, radius, 0.3, seed);
@@ -205,8 +209,8 @@ TEST(EngineLimits, RoundPieceIsHalvedIntoFewHullsNotCutIntoSlivers) {
       ASSERT_EQ(decomposed.size(), 1u);
       auto pieces = apply_engine_limits(decomposed, tau, limits, decompose_at, "disc");
       expect_pieces_contract(pieces, {Region{disc, {}}}, tau, limits);
-      const double chords = 2 * M_PI * radius / (2 * std::sqrt(2 * radius * 2 * tau));
-      EXPECT_LE(pieces.size(), 4 * std::ceil(chords / 7));
+      const double rim_edges = M_PI * std::sqrt(radius / (2 * tau));
+      EXPECT_LE(pieces.size(), std::floor(1.5 * std::ceil((rim_edges - 2) / 6)));
     }
   }
 }
