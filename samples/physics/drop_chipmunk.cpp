@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
   for (const samples::Placed& p : placed) {
     cpBody* body = cpSpaceAddBody(space, p.terrain ? cpBodyNewStatic() : cpBodyNew(0, 0));
     cpBodySetPosition(body, cpv(p.x, p.y));
+    // Bodies of 1 kg, as in the Box2D sample: a sheet of hundreds of hulls weighing thousands of
+    // small sprites pressed one 0.015 units into its neighbour (3 times the slop).
+    shape_options.density = samples::unit_mass_density(p, options.scale);
     altered += chipmunk::add_shapes(space, body, p.asset, p.level, shape_options).altered;
     bodies.push_back(body);
   }

@@ -107,10 +107,9 @@ std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon, double sl
   return std::nullopt;
 }
 
-// Whether the segment from ring[i] to ring[j] lies inside the simple counter-clockwise ring but
-// for its ends (exact): it leaves each end into the interior angle there, and it meets no edge
-// that does not end at i or j.
-bool is_inner_diagonal(const Ring& ring, std::size_t i, std::size_t j) {
+// Whether the segment from ring[i] to ring[j] leaves each end into the interior angle there
+// (exact), the ring being simple and counter-clockwise.
+bool leaves_into_interior(const Ring& ring, std::size_t i, std::size_t j) {
   const std::size_t n = ring.size();
   auto into_interior = [&](std::size_t at, Vec2 toward) {
     const Vec2 before = ring[(at + n - 1) % n], p = ring[at], after = ring[(at + 1) % n];
@@ -119,22 +118,106 @@ bool is_inner_diagonal(const Ring& ring, std::size_t i, std::size_t j) {
     }
     return !(orientation(p, toward, after) >= 0 && orientation(toward, p, before) >= 0);
   };
-  if (!into_interior(i, ring[j]) || !into_interior(j, ring[i])) return false;
-  // Edges whose boxes miss the diagonal's cannot meet it (exact comparisons): slicing asks this
-  // of every cut it tries.
-  const Vec2 low = glm::min(ring[i], ring[j]), high = glm::max(ring[i], ring[j]);
+  return into_interior(i, ring[j]) && into_interior(j, ring[i]);
+}
+
+// Whether edge k of a ring of n (from a to b) meets the segment from p = ring[i] to q = ring[j]
+// other than at an end it shares with it (exact). An edge whose box misses the segment's cannot
+// meet it (exact comparisons).
+bool edge_meets(std::size_t k, std::size_t n, Vec2 a, Vec2 b, std::size_t i, std::size_t j, Vec2 p,
+                Vec2 q) {
+  if (std::max(a.x, b.x) < std::min(p.x, q.x) || std::min(a.x, b.x) > std::max(p.x, q.x) ||
+      std::max(a.y, b.y) < std::min(p.y, q.y) || std::min(a.y, b.y) > std::max(p.y, q.y)) {
+    return false;
+  }
+  const std::size_t next = k + 1 == n ? 0 : k + 1;
+  if (k == i || k == j || next == i || next == j) return false;
+  return segments_intersect(p, q, a, b);
+}
+
+// Whether the segment from ring[i] to ring[j] lies inside the simple counter-clockwise ring but
+// for its ends (exact): it leaves each end into the interior angle there, and it meets no edge
+// that does not end at i or j.
+bool is_inner_diagonal(const Ring& ring, std::size_t i, std::size_t j) {
+  if (!leaves_into_interior(ring, i, j)) return false;
+  const std::size_t n = ring.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t next = k + 1 == n ? 0 : k + 1;
-    const Vec2 a = ring[k], b = ring[next];
-    if (std::max(a.x, b.x) < low.x || std::min(a.x, b.x) > high.x || std::max(a.y, b.y) < low.y ||
-        std::min(a.y, b.y) > high.y) {
-      continue;
+    if (edge_meets(k, n, ring[k], ring[k + 1 == n ? 0 : k + 1], i, j, ring[i], ring[j])) {
+      return false;
     }
-    if (k == i || k == j || next == i || next == j) continue;
-    if (segments_intersect(ring[i], ring[j], a, b)) return false;
   }
   return true;
 }
+
+// The rings that slicing cuts: runs base[first .. first + n - 1] of one ring, each closed by the
+// edge from its last vertex back to its first. Boxes of every kEdges edges of base let
+// is_inner_diagonal skip the edges far from a diagonal: every length a slice tries asks it, and
+// a scan of every edge was half the time of slicing a disc of 6,000 vertices into triangles.
+class RunsOfRing {
+ public:
+  explicit RunsOfRing(const Ring& base) : base_(base) {
+    for (std::size_t begin = 0; begin + 1 < base.size(); begin += kEdges) {
+      const std::size_t last = std::min(begin + kEdges, base.size() - 1);
+      Bounds box{base[begin], base[begin]};
+      for (std::size_t v = begin + 1; v <= last; ++v) {
+        box.low = glm::min(box.low, base[v]), box.high = glm::max(box.high, base[v]);
+      }
+      boxes_.push_back(box);
+    }
+  }
+
+  // is_inner_diagonal(ring, i, j) for ring = base[first .. first + ring.size() - 1].
+  bool is_inner_diagonal(const Ring& ring, std::size_t first, std::size_t i, std::size_t j) const {
+    if (!leaves_into_interior(ring, i, j)) return false;
+    const std::size_t n = ring.size();
+    const Vec2 p = ring[i], q = ring[j];
+    // The closing edge, then the run's edges (base's first .. first + n - 2), box by box.
+    if (edge_meets(n - 1, n, ring[n - 1], ring[0], i, j, p, q)) return false;
+    for (std::size_t box = first / kEdges; box * kEdges < first + n - 1; ++box) {
+      if (box_misses(boxes_[box], p, q)) continue;
+      const std::size_t begin = std::max(first, box * kEdges);
+      const std::size_t end = std::min(first + n - 1, (box + 1) * kEdges);
+      for (std::size_t e = begin; e < end; ++e) {
+        if (edge_meets(e - first, n, base_[e], base_[e + 1], i, j, p, q)) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  static constexpr std::size_t kEdges = 32;
+  struct Bounds {
+    Vec2 low, high;
+  };
+
+  // Whether the segment from p to q surely misses the box: their boxes are apart (exact), or
+  // every corner lies on one side of the segment's line by far more than the rounding of the
+  // side's computation (a few units in the last place of its terms).
+  static bool box_misses(const Bounds& box, Vec2 p, Vec2 q) {
+    if (box.high.x < std::min(p.x, q.x) || box.low.x > std::max(p.x, q.x) ||
+        box.high.y < std::min(p.y, q.y) || box.low.y > std::max(p.y, q.y)) {
+      return true;
+    }
+    const Vec2 d = q - p;
+    const double scale = std::abs(d.x) + std::abs(d.y);
+    int above = 0, below = 0;
+    for (Vec2 corner :
+         {box.low, box.high, Vec2{box.low.x, box.high.y}, Vec2{box.high.x, box.low.y}}) {
+      const Vec2 r = corner - p;
+      const double side = d.x * r.y - d.y * r.x;
+      const double error =
+          1e-12 * (std::abs(d.x * r.y) + std::abs(d.y * r.x) +
+                   scale * (std::abs(corner.x) + std::abs(corner.y) + std::abs(p.x) +
+                            std::abs(p.y) + std::abs(q.x) + std::abs(q.y)));
+      above += side > error;
+      below += side < -error;
+    }
+    return above == 4 || below == 4;
+  }
+
+  const Ring& base_;
+  std::vector<Bounds> boxes_;
+};
 
 // Splits a ring that is not convex along its shortest inner diagonal between vertices halfway
 // round from each other (of up to 32 evenly spaced starts), into halves that the contract does
@@ -354,6 +437,9 @@ class Constrainer {
     }
     Ring ring(outer.begin() + std::ptrdiff_t(start), outer.end());
     ring.insert(ring.end(), outer.begin(), outer.begin() + std::ptrdiff_t(start));
+    const Ring base = ring;
+    const RunsOfRing runs(base);
+    std::size_t first = 0;  // ring is base[first .. first + ring.size() - 1]
     std::vector<Slot> slots;
     std::size_t guess = 8;
     for (;;) {
@@ -371,7 +457,7 @@ class Constrainer {
       auto cut = [&](std::size_t length) -> std::optional<Slot> {
         if (length < 3 || length + 1 > n) return std::nullopt;
         const std::size_t before = length / 2, after = length - 1 - before;
-        if (!is_inner_diagonal(ring, after, n - before)) return std::nullopt;
+        if (!runs.is_inner_diagonal(ring, first, after, n - before)) return std::nullopt;
         Ring rest(ring.begin() + std::ptrdiff_t(after),
                   ring.begin() + std::ptrdiff_t(n - before + 1));
         if (!(signed_area(rest) > 0) || is_contract_sliver(Region{std::move(rest), {}}, slack_)) {
@@ -381,19 +467,35 @@ class Constrainer {
         cap.insert(cap.end(), ring.begin(), ring.begin() + std::ptrdiff_t(after + 1));
         return one_placed_slot(std::move(cap), region);
       };
-      // The largest length that cuts, by doubling from the last one and then bisecting (a
-      // slice that holds fits, most often, when a shorter one does).
+      // The largest length that cuts, by steps of 1, 2, 4, ... from the last one, up while
+      // they cut and down while they do not, and then bisecting (a slice that holds fits, most
+      // often, when a shorter one does). A disc's slices are alike: two tries each, most of them.
       if (n < 4) return false;
       std::size_t fits = 2, fails = n;  // lengths that cut and do not (nothing below 3)
       std::optional<Slot> best;
-      for (std::size_t length = std::clamp<std::size_t>(guess, 3, n - 1); length < fails;) {
-        std::optional<Slot> slot = cut(length);
-        if (!slot) {
-          fails = length;
-          break;
+      const std::size_t guessed = std::clamp<std::size_t>(guess, 3, n - 1);
+      if (std::optional<Slot> slot = cut(guessed)) {
+        fits = guessed, best = std::move(slot);
+        for (std::size_t step = 1; fits < n - 1; step *= 2) {
+          const std::size_t next = std::min(fits + step, n - 1);
+          std::optional<Slot> longer = cut(next);
+          if (!longer) {
+            fails = next;
+            break;
+          }
+          fits = next, best = std::move(longer);
         }
-        fits = length, best = std::move(slot);
-        length = length + 1 == n ? n : std::min(2 * length, n - 1);
+      } else {
+        fails = guessed;
+        for (std::size_t step = 1; fails > 3; step *= 2) {
+          const std::size_t next = fails > 3 + step ? fails - step : 3;
+          std::optional<Slot> shorter = cut(next);
+          if (shorter) {
+            fits = next, best = std::move(shorter);
+            break;
+          }
+          fails = next;
+        }
       }
       while (fails - fits > 1) {
         const std::size_t middle = fits + (fails - fits) / 2;
@@ -406,6 +508,7 @@ class Constrainer {
       if (!best) return false;
       const std::size_t before = fits / 2, after = fits - 1 - before;
       slots.push_back(std::move(*best));
+      first += after;
       ring =
           Ring(ring.begin() + std::ptrdiff_t(after), ring.begin() + std::ptrdiff_t(n - before + 1));
       guess = fits;
@@ -415,17 +518,15 @@ class Constrainer {
   }
 
   // Adds to out the slots of component (without holes, not convex) cut along diagonals: of its
-  // slices (see slice) or its halves (see halve_in_two), whichever are fewer and all placed
-  // (halves on a tie; no halves are tried against two slices, which no cut betters); false when
-  // neither cuts it.
+  // halves (see halve_in_two) or its slices (see slice), whichever are fewer and all placed
+  // (halves on a tie, and without slicing when the halves are two); false when neither cuts it.
   bool halve(const Region& component, std::uint32_t region, std::vector<Slot>& out,
              bool& could_halve) const {
-    std::vector<Slot> slices, halves;
-    const bool sliced = slice(component, region, slices);
-    const bool halved =
-        !(sliced && slices.size() <= 2) && halve_in_two(component, region, halves, could_halve);
+    std::vector<Slot> halves, slices;
+    const bool halved = halve_in_two(component, region, halves, could_halve);
     const bool halves_placed = halved && std::all_of(halves.begin(), halves.end(),
                                                      [](const Slot& slot) { return slot.placed; });
+    const bool sliced = !(halves_placed && halves.size() <= 2) && slice(component, region, slices);
     if (!sliced && !halved) return false;
     std::vector<Slot>& kept =
         sliced && (!halves_placed || slices.size() < halves.size()) ? slices : halves;
