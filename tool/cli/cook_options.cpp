@@ -151,6 +151,11 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
                   "Box2D 2.4's b2_linearSlop at 1 unit = 1 m")
       ->check(number_in(0, 1e9, "a distance in [0, 1e9] output units"))
       ->group("Engine");
+  command
+      .add_flag("--merge", settings.merge_pieces,
+                "Merge neighbouring pieces whose union is one piece within tau and fits one "
+                "hull: fewer hulls, same error bound, slower")
+      ->group("Engine");
 
   const CLI::Validator physical = number_in(0, kMaxPhysicsValue, "a finite number >= 0 (an f32)");
   command.add_option("--density", options.physics.density, "Density [kg/unit²]")

@@ -57,6 +57,7 @@ double perimeter(const Ring& ring) {
 struct Box {
   Vec2 low{std::numeric_limits<double>::infinity()};
   Vec2 high{-std::numeric_limits<double>::infinity()};
+  Box() = default;
   explicit Box(const Ring& ring) {
     for (Vec2 p : ring) low = glm::min(low, p), high = glm::max(high, p);
   }
@@ -73,21 +74,68 @@ bool is_convex_without_holes(const CookedPiece& piece) {
   return hull_area - component_area <= 1e-12 * std::max(1.0, hull_area);
 }
 
+// Slots listed by the cells of a uniform grid that their boxes overlap, about two cells a slot;
+// a slot whose box grows is listed again in its new cells (collect may then give it twice).
+class SlotGrid {
+ public:
+  SlotGrid(const Box& bounds, std::size_t slots) : low_(bounds.low) {
+    const Vec2 extent = glm::max(bounds.high - bounds.low, Vec2{0, 0});
+    const double area = std::max(extent.x * extent.y, 1e-300);
+    cell_ = std::max({std::sqrt(2 * area / double(slots)), extent.x / 1024, extent.y / 1024});
+    if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::max({extent.x, extent.y, 1.0});
+    columns_ = static_cast<std::size_t>(extent.x / cell_) + 1;
+    rows_ = static_cast<std::size_t>(extent.y / cell_) + 1;
+    cells_.resize(columns_ * rows_);
+  }
+  void add(std::size_t slot, const Box& box) {
+    for_each_cell(box, [&](std::size_t cell) { cells_[cell].push_back(slot); });
+  }
+  void collect(const Box& box, std::vector<std::size_t>& out) const {
+    for_each_cell(box, [&](std::size_t cell) {
+      out.insert(out.end(), cells_[cell].begin(), cells_[cell].end());
+    });
+  }
+
+ private:
+  std::size_t index(double v, double low, std::size_t count) const {
+    const double at = (v - low) / cell_;
+    if (!(at > 0)) return 0;
+    return std::min(count - 1, static_cast<std::size_t>(std::min(at, 1e18)));
+  }
+  template <typename Visit>
+  void for_each_cell(const Box& box, Visit&& visit) const {
+    const std::size_t c0 = index(box.low.x, low_.x, columns_);
+    const std::size_t c1 = index(box.high.x, low_.x, columns_);
+    const std::size_t r0 = index(box.low.y, low_.y, rows_);
+    const std::size_t r1 = index(box.high.y, low_.y, rows_);
+    for (std::size_t r = r0; r <= r1; ++r) {
+      for (std::size_t c = c0; c <= c1; ++c) visit(r * columns_ + c);
+    }
+  }
+
+  Vec2 low_;
+  double cell_ = 1;
+  std::size_t columns_ = 1, rows_ = 1;
+  std::vector<std::vector<std::size_t>> cells_;
+};
+
 // A vertex's position, as a key for the depths it was allowed before a merge.
 using VertexKey = std::pair<double, double>;
 
 class Constrainer {
  public:
   // slack: the contract's slack for rounding (contract_slack of the pieces' outer rings);
-  // halving: whether a piece may be halved along a diagonal where it is not convex (see add).
+  // halving: whether a piece may be halved along a diagonal where it is not convex (see add);
+  // merge_pieces: whether every placed piece is offered to its neighbours (see finish).
   Constrainer(double tau, const EngineLimits& limits, const SplitComponent& split, double slack,
-              double merge_width, bool halving)
+              double merge_width, bool halving, bool merge_pieces)
       : tau_(tau),
         limits_(limits),
         split_(split),
         slack_(slack),
         merge_width_(merge_width),
-        halving_(halving) {}
+        halving_(halving),
+        merge_pieces_(merge_pieces) {}
 
   // Whether some piece was split where halving could have been tried instead (without
   // halving: whether placing the pieces with halving could give other hulls).
@@ -129,11 +177,16 @@ class Constrainer {
           slot_count_[k] = out.size() - before;
         },
         kItemsWorthAThread, pieces.size());
+    boxes_.clear();
+    boxes_.reserve(slots_.size());
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       const std::size_t region = slots_[k].piece.region;
       if (region >= slots_of_region_.size()) slots_of_region_.resize(region + 1);
       slots_of_region_[region].push_back(k);
+      boxes_.emplace_back(slots_[k].piece.component.outer);
     }
+    grids_.resize(slots_of_region_.size());
+    grown_at_.assign(slots_.size(), 0);
   }
 
   // Places the pieces no hull of their own could hold: each is merged into a neighbour, or
@@ -144,6 +197,10 @@ class Constrainer {
     // whose merged hull may not be).
     for (Slot& slot : slots_) slot.is_thin = slot.placed && is_thin(slot.hull);
     merge_while([](const Slot& slot) { return slot.is_thin; });
+    // With merge_pieces, every piece goes to a neighbour that can take it within τ: the
+    // decomposition cuts where a notch is deepest, and pieces cut apart by different notches
+    // often make one piece within τ (the sample sprites: 10 % fewer hulls).
+    if (merge_pieces_) merge_while([](const Slot& slot) { return slot.placed; });
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       if (slots_[k].placed || slots_[k].merged) continue;
       // A grown hull would still hold a sliver.
@@ -420,14 +477,29 @@ class Constrainer {
 
  private:
   // Merges every slot that wants it (and is not merged already) into a neighbour, pass after
-  // pass while one merges: a merge may make room for another.
+  // pass while one merges: a merge may make room for another. A slot that failed is tried again
+  // only once it, or a slot whose box may touch it, has grown since: its try depends on nothing
+  // else, and would fail as before.
   template <typename Wants>
   void merge_while(const Wants& wants) {
+    std::vector<std::size_t> failed_at(slots_.size(), 0);  // the clock then; 0: not failed
+    auto changed_since = [&](std::size_t k, std::size_t time) {
+      if (grown_at_[k] > time) return true;
+      const std::vector<std::size_t>& near = slots_near(slots_[k].piece.region, boxes_[k]);
+      return std::any_of(near.begin(), near.end(),
+                         [&](std::size_t j) { return grown_at_[j] > time; });
+    };
     bool progress = true;
     while (progress) {
       progress = false;
       for (std::size_t k = 0; k < slots_.size(); ++k) {
-        if (wants(slots_[k]) && !slots_[k].merged && merge_into_neighbour(k)) progress = true;
+        if (!wants(slots_[k]) || slots_[k].merged) continue;
+        if (failed_at[k] != 0 && !changed_since(k, failed_at[k])) continue;
+        if (merge_into_neighbour(k)) {
+          progress = true;
+        } else {
+          failed_at[k] = clock_;
+        }
       }
     }
   }
@@ -436,21 +508,18 @@ class Constrainer {
   // component needs no split at τ and whose hull then fits within the limits.
   bool merge_into_neighbour(std::size_t k) {
     const CookedPiece& small = slots_[k].piece;
-    Box box(small.component.outer);
+    const Box& box = boxes_[k];
     struct Option {
       double shared;
       std::size_t slot;
       Region merged;
     };
     std::vector<Option> options;
-    // Only the slots of its own region (a scan of every slot took 10 s to refuse an image of
-    // thousands of blobs whose pieces were all thinner than --weld).
-    for (std::size_t j : slots_of_region_[small.region]) {
+    // Only the slots of its own region whose boxes touch its own (a scan of every slot took 10 s
+    // to refuse an image of thousands of blobs whose pieces were all thinner than --weld).
+    for (std::size_t j : slots_near(small.region, box)) {
       const Slot& other = slots_[j];
-      if (j == k || !other.placed || other.merged ||
-          !box.touches(Box(other.piece.component.outer))) {
-        continue;
-      }
+      if (j == k || !other.placed || other.merged || !box.touches(boxes_[j])) continue;
       if (std::optional<Region> merged = merge_components(small.component, other.piece.component)) {
         double shared = perimeter(small.component.outer) + perimeter(other.piece.component.outer) -
                         perimeter(merged->outer);
@@ -482,9 +551,37 @@ class Constrainer {
       neighbour.hull = std::move(*hull);
       neighbour.is_thin = is_thin(neighbour.hull);
       slots_[k].merged = true;
+      boxes_[option.slot] = Box(neighbour.piece.component.outer);
+      grown_at_[option.slot] = ++clock_;
+      if (grids_[neighbour.piece.region])
+        grids_[neighbour.piece.region]->add(option.slot, boxes_[option.slot]);
       return true;
     }
     return false;
+  }
+
+  // The slots of a region whose boxes may touch box, ascending (as slots_of_region_ lists them):
+  // a region of more than kSlotsWithoutGrid slots is searched through a grid of its boxes, where
+  // a scan of all of them made merging the pieces of a maze quadratic.
+  static constexpr std::size_t kSlotsWithoutGrid = 64;
+  const std::vector<std::size_t>& slots_near(std::size_t region, const Box& box) {
+    const std::vector<std::size_t>& all = slots_of_region_[region];
+    if (all.size() <= kSlotsWithoutGrid) return all;
+    std::optional<SlotGrid>& grid = grids_[region];
+    if (!grid) {
+      Box bounds;
+      for (std::size_t j : all) {
+        bounds.low = glm::min(bounds.low, boxes_[j].low);
+        bounds.high = glm::max(bounds.high, boxes_[j].high);
+      }
+      grid.emplace(bounds, all.size());
+      for (std::size_t j : all) grid->add(j, boxes_[j]);
+    }
+    near_.clear();
+    grid->collect(box, near_);
+    std::sort(near_.begin(), near_.end());
+    near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
+    return near_;
   }
 
   // For each vertex of merged, the depth it was allowed in the slot it came from.
@@ -601,10 +698,16 @@ class Constrainer {
   double slack_;
   double merge_width_;
   bool halving_;
+  bool merge_pieces_;
   std::vector<char> could_halve_;        // per piece given to add_all: see could_halve
   std::vector<std::size_t> slot_count_;  // per piece given to add_all: its slots, in order
   std::vector<Slot> slots_;
   std::vector<std::vector<std::size_t>> slots_of_region_;  // ascending, as slots_ are ordered
+  std::vector<Box> boxes_;                                 // per slot: its component's box
+  std::vector<std::optional<SlotGrid>> grids_;             // per region: see slots_near
+  std::vector<std::size_t> near_;                          // slots_near's answer
+  std::size_t clock_ = 1;                                  // counts merges, from 1
+  std::vector<std::size_t> grown_at_;       // per slot: the clock when it last grew by a merge
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
 };
 
@@ -633,7 +736,8 @@ bool hull_meets_limits(const Ring& hull, const EngineLimits& limits) {
 std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, double tau,
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
-                                             unsigned threads, double merge_width, bool halving) {
+                                             unsigned threads, double merge_width, bool halving,
+                                             bool merge_pieces) {
   std::vector<const Ring*> rings;
   rings.reserve(pieces.size());
   for (const CookedPiece& piece : pieces) rings.push_back(&piece.component.outer);
@@ -644,10 +748,10 @@ std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, do
   // change anything, and the way with fewer hulls is kept (without halving on a tie); so is the
   // one that succeeds, when the other is refused.
   const double slack = contract_slack(rings);
-  Constrainer without(tau, limits, split, slack, merge_width, false);
+  Constrainer without(tau, limits, split, slack, merge_width, false, merge_pieces);
   without.add_all(pieces, threads);
   if (!halving || !without.could_halve()) return without.finish(source);
-  Constrainer with(tau, limits, split, slack, merge_width, true);
+  Constrainer with(tau, limits, split, slack, merge_width, true, merge_pieces);
   with.add_all_reusing(&without, std::move(pieces), threads);
   std::optional<std::vector<CookedPiece>> placed;
   std::exception_ptr refused;

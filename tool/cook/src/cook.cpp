@@ -433,7 +433,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
     }
     std::vector<CookedPiece> constrained =
         apply_engine_limits(to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split,
-                            where, threads, merge_width);
+                            where, threads, merge_width, true, settings.merge_pieces);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {

@@ -154,6 +154,8 @@ std::string settings_text(const Settings& settings) {
   line("y_down", settings.y_down ? "true" : "false");
   line("max_verts", std::to_string(settings.max_verts));
   line("weld", settings.weld ? exact(*settings.weld) : "default");
+  // Only when set: fragments cooked without it keep their bytes.
+  if (settings.merge_pieces) line("merge_pieces", "true");
   if (settings.physics) {
     const PhysicsProperties& physics = *settings.physics;
     line("physics", exact(physics.density) + "," + exact(physics.friction) + "," +

@@ -64,6 +64,9 @@ using SplitComponent = std::function<std::vector<CookedPiece>(const Region& comp
 // The pieces keep their order; a merged piece takes its neighbour's place. threads: how many may
 // fit the pieces' hulls at once (split is then called from as many); the result is the same for
 // any count.
+// merge_pieces: every placed piece is then also merged into a neighbour that can take it (the
+// merged component one piece at tau, its hull within the limits), pass after pass while one
+// merges: fewer hulls under the same contract, for more time.
 // merge_width [output units]: a hull thinner than this, though it meets the limits, is merged
 // into a neighbour as a piece too small for the weld is, where one can take it (the cooker passes
 // the bundle's quantization bound, on whose grid such a hull rounds to a segment).
@@ -71,7 +74,7 @@ std::vector<CookedPiece> apply_engine_limits(std::vector<CookedPiece> pieces, do
                                              const EngineLimits& limits,
                                              const SplitComponent& split, std::string_view source,
                                              unsigned threads = 1, double merge_width = 0.0,
-                                             bool halving = true);
+                                             bool halving = true, bool merge_pieces = false);
 
 // True when hull meets the limits' vertex count, weld and collinearity rules and is a convex,
 // counter-clockwise polygon with at least 3 vertices.

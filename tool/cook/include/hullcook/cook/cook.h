@@ -80,6 +80,9 @@ struct Settings {
   // Engine constraints.
   std::size_t max_verts = 8;   // per hull; 0 = unlimited
   std::optional<double> weld;  // [output units] default kDefaultWeld
+  // Merge neighbouring pieces whose union is one piece within τ and fits one hull within the
+  // limits (--merge): fewer hulls under the same error bound, for more cooking time.
+  bool merge_pieces = false;
 
   // Output.
   std::optional<PhysicsProperties> physics;
