@@ -62,14 +62,15 @@ std::string cook_replay(const std::filesystem::path& input, const CookCase& sett
          (settings.weld ? " --weld " + number(*settings.weld) : std::string()) +
          (settings.alpha != 128 ? " --alpha " + number(settings.alpha) : std::string()) +
          (settings.simplify ? " --simplify " + number(*settings.simplify) : std::string()) +
-         " -o cooked.json";
+         (settings.merge ? " --merge" : "") + " -o cooked.json";
 }
 
 std::string cook_label(const std::string& name, const CookCase& settings) {
   return name + ", cook " + measure_name(settings.measure) + ", tau " + number(settings.tau_px) +
          ", ppu " + number(settings.pixels_per_unit) +
          (settings.alpha != 128 ? ", alpha " + number(settings.alpha) : std::string()) +
-         (settings.simplify ? ", simplify " + number(*settings.simplify) : std::string());
+         (settings.simplify ? ", simplify " + number(*settings.simplify) : std::string()) +
+         (settings.merge ? ", merge" : "");
 }
 
 CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& settings) {
@@ -81,6 +82,7 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
   cook_settings.weld = settings.weld;
   cook_settings.alpha = settings.alpha;
   cook_settings.simplify = settings.simplify;
+  cook_settings.merge_pieces = settings.merge;
   cook_settings.threads = 1;
   auto start = Clock::now();
   try {
@@ -176,6 +178,7 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
     for (const auto& [tau_px, pixels_per_unit] : {std::pair{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}}) {
       cooks.push_back(image_cook(tau_px, pixels_per_unit, measure));
     }
+    cooks[cooks.size() - 2].merge = true;  // τ 4 px: the most pieces a merge can join
     if (family == ImageFamily::soft_edges) {
       CookCase faint = image_cook(0.25, 1.0, measure);
       faint.alpha = 1, faint.simplify = 0.0;
@@ -188,6 +191,7 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
 CookCase polygon_cook(double tau, Measure measure) {
   CookCase cook = image_cook(tau, 1.0, measure);
   if (tau == 0) cook.weld = 0.0;
+  cook.merge = tau >= 4;  // as images are at τ 4 px
   return cook;
 }
 
