@@ -249,6 +249,21 @@ TEST(EngineLimits, ReviewHalvingNeverGivesMoreHullsThanDecomposingFiner) {
   std::filesystem::remove(file);
 }
 
+// A review of stop 50: a wavy disc 2e-4 across (radius 1e-4 * (1 + 0.03 sin 11t + 0.005 noise),
+// 1,000 vertices) at --tau 1% --max-verts 3 --weld 0 stopped with an internal error (exit 4): a
+// piece convex within rounding (a notch of 1e-12 of its size) was halved along a diagonal that
+// crossed its boundary, into a half that intersects itself. Halving a convex piece now takes
+// inner diagonals only.
+TEST(EngineLimits, Review50_TinyWavyDiscIsHalvedIntoSimpleTriangles) {
+  Settings settings;
+  settings.tau = Tolerance{0.01, true};
+  settings.max_verts = 3;
+  settings.weld = 0.0;
+  EXPECT_NO_THROW(cook(
+      {std::filesystem::path(HULLCOOK_SOURCE_DIR) / "tests/core/data/review50_tiny_wavy_disc.poly"},
+      settings));
+}
+
 // Pieces merge along a shared stretch of boundary, also one whose ends are vertices of only one
 // of them (T-junctions, as further cuts on one side leave them), and not where they meet at a
 // point: merge_components refuses those before it builds anything (meet_at_two_points), since a

@@ -119,6 +119,37 @@ class SlotGrid {
   std::vector<std::vector<std::size_t>> cells_;
 };
 
+// Whether the union of two pieces surely fails pockets_within(union, its hull, bound), which a
+// merge needs, found without building the union (building every neighbour's union was a third of
+// the time of cooking with --merge): a piece with holes leaves the union holes; and every vertex
+// of a piece lies on its region's boundary (cuts join boundary points), so on the union's, where
+// pockets_within measures it (or the vertices either side of it) against the line of a hull edge,
+// no nearer than the nearest edge line of the hull of both pieces. A vertex farther than bound
+// from all of them, beyond rounding, fails it.
+bool union_surely_beyond(const CookedPiece& a, const CookedPiece& b, double bound) {
+  if (!a.component.holes.empty() || !b.component.holes.empty()) return true;
+  Ring corners = a.hull;
+  corners.insert(corners.end(), b.hull.begin(), b.hull.end());
+  const Ring hull = convex_hull(corners);
+  const std::size_t m = hull.size();
+  if (m < 3) return false;
+  double extent = 0;
+  for (Vec2 p : hull) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  const double beyond = bound + 1e-9 * (bound + extent);
+  for (const Ring* ring : {&a.component.outer, &b.component.outer}) {
+    for (Vec2 v : *ring) {
+      bool near_an_edge = false;
+      for (std::size_t e = 0; e < m && !near_an_edge; ++e) {
+        const Vec2 start = hull[e], edge = hull[e + 1 == m ? 0 : e + 1] - start;
+        const double length = glm::length(edge);
+        near_an_edge = !(length > 0) || cross(edge, v - start) <= beyond * length;
+      }
+      if (!near_an_edge) return true;
+    }
+  }
+  return false;
+}
+
 // A vertex's position, as a key for the depths it was allowed before a merge.
 using VertexKey = std::pair<double, double>;
 
@@ -304,11 +335,13 @@ class Constrainer {
 
   // Adds to out the slots of slices of component (without holes, not convex), cut off one after
   // another along inner diagonals, each the largest that one engine-ready hull holds; false
-  // (out unchanged) when some slice cannot be cut. A slice straddles the diagonal the last one
-  // left, so the cuts run across the piece like a loaf's: each hull takes max_verts - 2 new
-  // vertices of the rim, where halving, halves of halves, gave a traced 2048 px disc 22 hulls
-  // for a rim of 102 (17 do).
-  bool slice(const Region& component, std::uint32_t region, std::vector<Slot>& out) const {
+  // (out unchanged) when some slice cannot be cut, or the slices would be no fewer than
+  // fewer_than. A slice straddles the diagonal the last one left, so the cuts run across the
+  // piece like a loaf's: each hull takes about max_verts - 2 new vertices of the rim, where
+  // halves of halves gave a traced 512 px disc 8 hulls (5 slices) and a 2048 px one 22 (13).
+  // guess: the first slice's length to start the search from [vertices].
+  bool slice(const Region& component, std::uint32_t region, std::vector<Slot>& out,
+             std::size_t guess, std::size_t fewer_than) const {
     // From the vertex farthest from the vertices' mean: an end of an elongated piece, so that
     // the slices cut across it.
     const Ring& outer = component.outer;
@@ -325,8 +358,9 @@ class Constrainer {
     const RunsOfRing runs(base);
     std::size_t first = 0;  // ring is base[first .. first + ring.size() - 1]
     std::vector<Slot> slots;
-    std::size_t guess = 8;
     for (;;) {
+      // Slices as many as fewer_than - 1 and a rest that one hull does not hold are no fewer.
+      if (slots.size() + 1 >= fewer_than) return false;
       const std::size_t n = ring.size();
       // The rest is tried whole once it is no longer than four slices (decomposing a long rest
       // after every slice was quadratic).
@@ -338,10 +372,23 @@ class Constrainer {
       }
       // The slice of `length` vertices: ring[n - before .. n - 1] and ring[0 .. after], cut
       // along the diagonal from ring[after] to ring[n - before]; the rest of the ring remains.
-      auto cut = [&](std::size_t length) -> std::optional<Slot> {
-        if (length < 3 || length + 1 > n) return std::nullopt;
+      if (n < 4) return false;
+      // Whether the slice of `length` can be cut along an inner diagonal: a traced rim's pixel
+      // steps leave many lengths that cannot.
+      auto can_cut = [&](std::size_t length) {
+        if (length < 3 || length + 1 > n) return false;
         const std::size_t before = length / 2, after = length - 1 - before;
-        if (!runs.is_inner_diagonal(ring, first, after, n - before)) return std::nullopt;
+        return runs.is_inner_diagonal(ring, first, after, n - before);
+      };
+      // The first length from `length` on, below limit, that can be cut; limit if none.
+      auto cuttable_from = [&](std::size_t length, std::size_t limit) {
+        while (length < limit && !can_cut(length)) ++length;
+        return length;
+      };
+      // The slot of the slice of `length` (one that can be cut) when one hull holds it and the
+      // rest keeps an area that is no sliver (a slice too long leaves none).
+      auto holds = [&](std::size_t length) -> std::optional<Slot> {
+        const std::size_t before = length / 2, after = length - 1 - before;
         Ring rest(ring.begin() + std::ptrdiff_t(after),
                   ring.begin() + std::ptrdiff_t(n - before + 1));
         if (!(signed_area(rest) > 0) || is_contract_sliver(Region{std::move(rest), {}}, slack_)) {
@@ -351,42 +398,45 @@ class Constrainer {
         cap.insert(cap.end(), ring.begin(), ring.begin() + std::ptrdiff_t(after + 1));
         return one_placed_slot(std::move(cap), region);
       };
-      // The largest length that cuts, by steps of 1, 2, 4, ... from the last one, up while
-      // they cut and down while they do not, and then bisecting (a slice that holds fits, most
-      // often, when a shorter one does). A disc's slices are alike: two tries each, most of them.
-      if (n < 4) return false;
-      std::size_t fits = 2, fails = n;  // lengths that cut and do not (nothing below 3)
+      // The longest slice one hull holds, by steps of 1, 2, 4, ... from the last one's length, up
+      // while they hold and down while they do not, then bisecting; lengths that cannot be cut
+      // are passed over. A slice that holds fits, most often, when a shorter one does; a disc's
+      // slices are alike, two tries each, most of them.
+      std::size_t fits = 2, fails = n;  // a length that holds (nothing below 3), one that not
       std::optional<Slot> best;
-      const std::size_t guessed = std::clamp<std::size_t>(guess, 3, n - 1);
-      if (std::optional<Slot> slot = cut(guessed)) {
-        fits = guessed, best = std::move(slot);
-        for (std::size_t step = 1; fits < n - 1; step *= 2) {
-          const std::size_t next = std::min(fits + step, n - 1);
-          std::optional<Slot> longer = cut(next);
-          if (!longer) {
-            fails = next;
-            break;
-          }
-          fits = next, best = std::move(longer);
+      auto try_length = [&](std::size_t length) {
+        std::optional<Slot> slot = holds(length);
+        if (!slot) {
+          fails = length;
+          return false;
+        }
+        fits = length, best = std::move(slot);
+        return true;
+      };
+      const std::size_t guessed = cuttable_from(std::clamp<std::size_t>(guess, 3, n - 1), fails);
+      if (guessed < fails && try_length(guessed)) {
+        for (std::size_t step = 1; fits + 1 < fails; step *= 2) {
+          const std::size_t next = cuttable_from(std::min(fits + step, n - 1), fails);
+          if (next >= fails || !try_length(next)) break;
         }
       } else {
         fails = guessed;
-        for (std::size_t step = 1; fails > 3; step *= 2) {
-          const std::size_t next = fails > 3 + step ? fails - step : 3;
-          std::optional<Slot> shorter = cut(next);
-          if (shorter) {
-            fits = next, best = std::move(shorter);
-            break;
+        for (std::size_t step = 1; fails > 3 && fits < 3; step *= 2) {
+          const std::size_t from = fails > 3 + step ? fails - step : 3;
+          const std::size_t next = cuttable_from(from, fails);
+          if (next >= fails) {
+            fails = from;
+          } else {
+            try_length(next);
           }
-          fails = next;
         }
       }
       while (fails - fits > 1) {
-        const std::size_t middle = fits + (fails - fits) / 2;
-        if (std::optional<Slot> slot = cut(middle)) {
-          fits = middle, best = std::move(slot);
+        const std::size_t middle = cuttable_from(fits + (fails - fits) / 2, fails);
+        if (middle >= fails) {
+          fails = fits + (fails - fits) / 2;
         } else {
-          fails = middle;
+          try_length(middle);
         }
       }
       if (!best) return false;
@@ -401,16 +451,25 @@ class Constrainer {
     return true;
   }
 
+  // The depth add and split are given a half at (see halve_in_two): it is only halved further,
+  // not decomposed finer, nor sliced (slicing every half of every halving was most of the time
+  // of cutting a rough disc of 10,000 vertices into hulls of 4).
+  static constexpr int kHalfDepth = 4;
+
   // Adds to out the slots of component (without holes, not convex) cut along diagonals: of its
   // halves (see halve_in_two) or its slices (see slice), whichever are fewer and all placed
   // (halves on a tie, and without slicing when the halves are two); false when neither cuts it.
   bool halve(const Region& component, std::uint32_t region, std::vector<Slot>& out,
-             bool& could_halve) const {
+             bool& could_halve, bool may_slice = true) const {
     std::vector<Slot> halves, slices;
     const bool halved = halve_in_two(component, region, halves, could_halve);
     const bool halves_placed = halved && std::all_of(halves.begin(), halves.end(),
                                                      [](const Slot& slot) { return slot.placed; });
-    const bool sliced = !(halves_placed && halves.size() <= 2) && slice(component, region, slices);
+    // The first slice's length is guessed from the halves: about as many slices, most often.
+    const std::size_t guess = component.outer.size() / std::max<std::size_t>(halves.size(), 2);
+    const bool sliced =
+        may_slice && !(halves_placed && halves.size() <= 2) &&
+        slice(component, region, slices, guess, halves_placed ? halves.size() : std::size_t(-1));
     if (!sliced && !halved) return false;
     std::vector<Slot>& kept =
         sliced && (!halves_placed || slices.size() < halves.size()) ? slices : halves;
@@ -428,7 +487,7 @@ class Constrainer {
     for (Ring* half : {&halves->first, &halves->second}) {
       for (CookedPiece& part : split_(Region{std::move(*half), {}}, tau_)) {
         part.region = region;
-        add(std::move(part), 3, out, could_halve);
+        add(std::move(part), kHalfDepth, out, could_halve);
       }
     }
     return true;
@@ -464,7 +523,10 @@ class Constrainer {
         // A half (see halve), or left whole at τ 0: a notch no deeper than the contract's slack,
         // which only cuts that leave slivers resolve (see resolve_notch); at 1e6 from the origin
         // a piece 25 long and 4e-3 wide kept one in a hull of 10 vertices, over --max-verts 8.
-        if (halving_ && halve(piece.component, piece.region, out, could_halve)) return;
+        if (halving_ &&
+            halve(piece.component, piece.region, out, could_halve, depth != kHalfDepth)) {
+          return;
+        }
         could_halve = true;
         splits_into_slivers = true;
       }
@@ -520,6 +582,7 @@ class Constrainer {
     for (std::size_t j : slots_near(small.region, box)) {
       const Slot& other = slots_[j];
       if (j == k || !other.placed || other.merged || !box.touches(boxes_[j])) continue;
+      if (union_surely_beyond(small, other.piece, tau_)) continue;
       if (std::optional<Region> merged = merge_components(small.component, other.piece.component)) {
         double shared = perimeter(small.component.outer) + perimeter(other.piece.component.outer) -
                         perimeter(merged->outer);

@@ -52,6 +52,10 @@ std::optional<std::pair<Ring, Ring>> halve_convex(const Ring& polygon, double sl
   if (n < 4) return std::nullopt;
   auto halves_from = [&](std::size_t start) -> std::optional<std::pair<Ring, Ring>> {
     const std::size_t middle = start + n / 2;
+    // "Convex" within rounding (see is_convex_without_holes): a notch of 1e-12 of its size lets
+    // the diagonal cross the boundary (at --max-verts 3, 1e-6 across: halves that intersect
+    // themselves, an internal error).
+    if (!is_inner_diagonal(polygon, start % n, middle % n)) return std::nullopt;
     Region first, second;
     for (std::size_t k = start; k <= middle; ++k) first.outer.push_back(polygon[k % n]);
     for (std::size_t k = middle; k <= start + n; ++k) second.outer.push_back(polygon[k % n]);
