@@ -138,6 +138,22 @@ TEST_F(ProjectSettings, Issue18_EachAssetCooksAsWithItsSettingsOnTheCommandLine)
   expect_same_levels(hero, cook({root / "art/hero.png"}, settings).assets.at(0));
 }
 
+// "merge" (stop 50) cooks an asset as --merge does, in a folder's cook and cooked alone; the
+// other assets keep their hulls.
+TEST_F(ProjectSettings, MergeIsASettingPerAsset) {
+  Settings settings;
+  settings.threads = 2;
+  const CookResult before = cook({root / "art"}, settings);
+  write(root / "art/hero.hullcook.json", R"({"merge": true})");
+  const CookResult after = cook({root / "art"}, settings);
+  EXPECT_LT(named(after, "hero.png").levels.at(0).hulls.size(),
+            named(before, "hero.png").levels.at(0).hulls.size());
+  expect_same_levels(named(after, "hero.png"),
+                     cook({root / "art/hero.png"}, settings).assets.at(0));
+  expect_same_levels(named(after, "enemies/bat.png"), named(before, "enemies/bat.png"));
+  expect_same_levels(named(after, "tiles/grass.png"), named(before, "tiles/grass.png"));
+}
+
 // Cooked alone (as a fragment build cooks each image), an image finds the nearest project file up
 // from it and gets the settings it gets when its folder is cooked.
 TEST_F(ProjectSettings, Issue18_AnImageCookedAloneGetsItsFolderCooksSettings) {
@@ -182,6 +198,7 @@ TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
   expect_refused(sidecar, R"({"tau": "fast"})", "'tau'");
   expect_refused(sidecar, R"({"max_verts": 2})", "'max_verts'");
   expect_refused(sidecar, R"({"measure": "l2"})", "'measure'");
+  expect_refused(sidecar, R"({"merge": "yes"})", "'merge'");
   expect_refused(sidecar, R"({"physics": {"density": -1}})", "'density'");
   expect_refused(sidecar, R"({"simplify": 1})", "unknown setting 'simplify'");
   write(sidecar, R"({"lods": ["2%"]})");

@@ -168,13 +168,16 @@ Settings with_overrides(Settings settings, const json& object, const std::string
     } else if (key == "skip") {
       if (!value.is_boolean()) throw InputError(file + ": 'skip' must be true or false");
       settings.skip = value.get<bool>();
+    } else if (key == "merge") {
+      if (!value.is_boolean()) throw InputError(file + ": 'merge' must be true or false");
+      settings.merge_pieces = value.get<bool>();
     } else if (key == "physics") {
       PhysicsProperties physics = settings.physics.value_or(PhysicsProperties{});
       apply_physics_json(physics, value, file);
       settings.physics = physics;
     } else {
       throw InputError(file + ": unknown setting '" + key +
-                       "' (tau, lods, alpha, color_key, max_verts, measure, physics, skip)");
+                       "' (tau, lods, alpha, color_key, max_verts, merge, measure, physics, skip)");
     }
   }
   return settings;

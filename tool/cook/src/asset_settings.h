@@ -8,7 +8,8 @@
 //   hero.hullcook.json: {"alpha": 64, "lods": ["4", "8"]}
 //
 // Keys: tau and lods (as --tau and --lod: "2", "2px", "1%"), alpha (0-255), color_key (as
-// --color-key: "#ff00ff", or null for none), max_verts (0 or 3-65535), measure (sl, sp, h1, h2),
+// --color-key: "#ff00ff", or null for none), max_verts (0 or 3-65535), merge (as --merge: true
+// or false), measure (sl, sp, h1, h2),
 // physics (an object as in NAME.physics.json), skip (true: the image is no asset). A project file
 // applies to the images in its directory and below; the nearest one up from an image is used,
 // its globs matched against the image's path relative to the project file's directory ('*' and
