@@ -90,10 +90,8 @@ bool folds_back(Vec2 before, Vec2 shared, Vec2 after) {
   return orientation(before, shared, after) == 0 && glm::dot(before - shared, after - shared) > 0;
 }
 
-// Whether two distinct points, each a vertex of one ring, lie on both rings' boundaries. Two
-// rings that share a stretch of boundary have them: its ends. Most pairs that a merge asks about
-// do not (the thin triangles of a fan, whose boxes span the others, meet only at its apex), and
-// this asks it without allocating: a sawtooth of 5,000 vertices made 2 million calls.
+}  // namespace
+
 bool meet_at_two_points(const Ring& a, const Ring& b) {
   const Box a_box = box_of(a), b_box = box_of(b);
   auto on_boundary_of = [](const Ring& ring, const Box& box, Vec2 p) {
@@ -115,8 +113,6 @@ bool meet_at_two_points(const Ring& a, const Ring& b) {
   };
   return second_found(a, b, b_box) || second_found(b, a, a_box);
 }
-
-}  // namespace
 
 std::optional<Region> merge_components(const Region& a_region, const Region& b_region) {
   if (!meet_at_two_points(a_region.outer, b_region.outer)) return std::nullopt;
