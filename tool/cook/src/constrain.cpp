@@ -295,13 +295,7 @@ class Constrainer {
       out.push_back({.piece = std::move(piece), .hull = std::move(hull), .is_sliver = true});
       return;
     }
-    // Most hulls meet the limits as the decomposition gives them.
-    if (hull_meets_limits(piece.hull, limits_)) {
-      Ring hull = piece.hull;
-      out.push_back({.piece = std::move(piece), .hull = std::move(hull), .placed = true});
-      return;
-    }
-    if (std::optional<Ring> hull = fit_own_hull(piece)) {
+    if (std::optional<Ring> hull = engine_hull(piece)) {
       out.push_back({.piece = std::move(piece), .hull = std::move(*hull), .placed = true});
       return;
     }
@@ -332,9 +326,11 @@ class Constrainer {
     std::move(halved.begin(), halved.end(), std::back_inserter(out));
   }
 
-  // An engine-ready hull for piece that grows within τ of its own component (stricter than the
-  // outline, it keeps hulls on their pieces rather than spread over their neighbours).
-  std::optional<Ring> fit_own_hull(const CookedPiece& piece) const {
+  // An engine-ready hull for piece: the decomposition's, as most meet the limits, else one grown
+  // within τ of its own component (stricter than the outline, it keeps hulls on their pieces
+  // rather than spread over their neighbours).
+  std::optional<Ring> engine_hull(const CookedPiece& piece) const {
+    if (hull_meets_limits(piece.hull, limits_)) return piece.hull;
     std::vector<double> allowed = allowed_depths(piece.component, piece.hull, tau_);
     OutlineDistance reach({&piece.component});
     bool edges_suffice = pockets_within(piece.component, piece.hull, tau_);
@@ -353,9 +349,7 @@ class Constrainer {
     if (parts.size() != 1 || is_small(parts[0])) return std::nullopt;
     CookedPiece& piece = parts[0];
     piece.region = region;
-    std::optional<Ring> hull = hull_meets_limits(piece.hull, limits_)
-                                   ? std::optional<Ring>(piece.hull)
-                                   : fit_own_hull(piece);
+    std::optional<Ring> hull = engine_hull(piece);
     if (!hull) return std::nullopt;
     return Slot{.piece = std::move(piece), .hull = std::move(*hull), .placed = true};
   }
