@@ -457,6 +457,84 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
       << queries_with_shortcut << " queries with the shortcut, " << queries_without << " without";
 }
 
+// Stop 51: a cap of a rough disc of 10,000 vertices (2,500 of them, 250 hull lines) took 100 ms
+// to fit, nearly all of it in the scans of every start's lines, about 30 each; slicing fits
+// about 20 caps per slice. A line's scan now starts where the nearest scan before it reached
+// (a line moved towards another meets it nearer), and the polygon kept has its apexes checked.
+// Fitting with inferred reaches must give the hulls the exact scans give, on rough discs, stars
+// whose pockets break the argument, crowns and rings of tiny edges, whole and in pieces, with
+// fewer outline queries.
+TEST(EngineLimits, InferredReachesGiveTheHullsOfTheExactScans) {
+  std::mt19937 random(51);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Ring> shapes;
+  for (unsigned seed = 1; seed <= 4; ++seed) {  // caps of rough discs, as slicing cuts them
+    const Ring disc = rough_disc(1000 * seed, 250.0 * seed, 0.3, seed);
+    for (std::size_t parts : {12, 8, 5, 3}) {
+      // Closed through a point well inside: a chord between rough ends may cross the rim.
+      Ring cap(disc.begin(), disc.begin() + std::ptrdiff_t(disc.size() / parts));
+      cap.push_back(0.25 * (cap.front() + cap.back()));
+      shapes.push_back(cap);
+    }
+  }
+  for (int trial = 0; trial < 6; ++trial) {  // stars with deep pockets
+    Ring star;
+    const int n = 60 + 40 * trial;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * i / n;
+      const double radius = 50 + 20 * unit(random) + 15 * std::sin(5 * angle);
+      star.push_back(radius * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    shapes.push_back(star);
+  }
+  for (int tips : {40, 90}) {  // crowns
+    Ring crown;
+    for (int i = 0; i < 2 * tips; ++i) {
+      const double angle = M_PI * i / tips;
+      crown.push_back((i % 2 == 0 ? 50.0 : 47.0) * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    shapes.push_back(crown);
+  }
+  int compared = 0, reduced = 0;
+  // The apexes tested for the caps, whose hulls' lines each reach tens on.
+  std::uint64_t tests_inferred = 0, tests_exact = 0;
+  for (const Ring& shape : shapes) {
+    const bool is_cap = &shape < &shapes[16];
+    for (double tau : {0.5, 2.0, 5.0}) {
+      std::vector<CookedPiece> pieces = decompose_at(Region{shape, {}}, tau);
+      pieces.push_back(convex_piece_of(shape));
+      for (const CookedPiece& piece : pieces) {
+        const FitterInputs inputs(piece, tau);
+        for (std::size_t max_verts : {4u, 6u, 8u}) {
+          if (piece.hull.size() <= max_verts) continue;
+          for (double weld : {0.005, 0.0}) {
+            const EngineLimits limits{max_verts, weld};
+            HullFitter inferring = inputs.fitter(limits), exact = inputs.fitter(limits);
+            exact.infer_reaches(false);
+            const std::optional<Ring> fast = inferring.fit(piece.hull);
+            const std::optional<Ring> slow = exact.fit(piece.hull);
+            if (is_cap) {
+              tests_inferred += inferring.apex_tests();
+              tests_exact += exact.apex_tests();
+            }
+            ++compared;
+            ASSERT_EQ(fast.has_value(), slow.has_value())
+                << "shape of " << shape.size() << ", tau " << tau << ", max_verts " << max_verts;
+            if (!fast) continue;
+            ++reduced;
+            EXPECT_EQ(*fast, *slow)
+                << "shape of " << shape.size() << ", tau " << tau << ", max_verts " << max_verts;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 300);
+  EXPECT_GT(reduced, 150);
+  EXPECT_LT(tests_inferred * 4, tests_exact * 3)
+      << tests_inferred << " apexes tested inferring, " << tests_exact << " exact";
+}
+
 // Issue 17's robustness hunt: a 2000-vertex circle (.poly) at the default --max-verts 8 took 17 s
 // and an m x m table of apexes (64 MB), every halving level trying every start; no start can close
 // when the greedy chain from one start needs two lines more than max_verts.

@@ -5,6 +5,7 @@
 
 #include "hullcook/cook/constrain.h"
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -72,6 +73,12 @@ class HullFitter {
   // full scan after each removal (the two must agree). The default is where the queue pays.
   void queue_mending_from(std::size_t vertices) { queued_from_ = vertices; }
 
+  // For tests: whether reducing the vertex count may infer what a line's scan reaches from the
+  // line before it (see reach_from; with or without, the same hulls must come out).
+  void infer_reaches(bool infer) { infer_reaches_ = infer; }
+  // How many meeting points of two hull lines this fitter has tested (what inferring saves).
+  std::uint64_t apex_tests() const { return apex_tests_; }
+
   // True when every point grown adds to known (convex, inside it) is within bound.
   bool growth_within(const Ring& grown, const Ring& known) const;
 
@@ -106,6 +113,9 @@ class HullFitter {
                              std::vector<std::pair<std::size_t, VertexDepth>>& changed) const;
   bool too_small(const Ring& hull) const;
   std::optional<Ring> reduce_vertex_count(const Ring& hull);
+  // reduce_vertex_count's search, with reaches inferred or not; with, *refuted is set when a
+  // polygon's inferred apex failed its check.
+  std::optional<Ring> reduce_by_chains(const Ring& hull, bool* refuted);
   bool may_close_within_max_verts(const Ring& hull);
   std::size_t reach_from(const Ring& hull, std::size_t i, std::size_t limit);
   bool apex_within(const Ring& hull, std::size_t i, std::size_t j) const;
@@ -124,6 +134,12 @@ class HullFitter {
   // reach_from), and whether the line after those is known to be beyond.
   std::vector<std::size_t> reach_known_;
   std::vector<char> beyond_after_known_;
+  bool infer_reaches_ = true;
+  bool may_infer_ = false;  // whether rounding leaves the argument standing (see
+                            // may_close_within_max_verts)
+  bool inferring_ = false;  // whether reach_from infers a scan's first lines from the line before
+  bool inferred_ = false;   // whether it did
+  mutable std::uint64_t apex_tests_ = 0;
   std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
   double outside_by_rounding_ = 0;    // how far a component vertex may lie outside that hull
   // reduce_vertex_count's chains: the one being followed, and those that closed.
