@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -75,6 +77,54 @@ TEST(ParallelJoin, TheFirstErrorByIndexIsThrown) {
     } catch (const std::runtime_error& error) {
       EXPECT_STREQ(error.what(), "item 40") << threads << " threads";
     }
+  }
+}
+
+// Issue 17: a thread started per call cost about 57 µs, several times per cook of one sprite,
+// and lost its thread_local scratch. The helpers are now kept: a later call runs on threads that
+// remember an earlier one. A call made from inside an item, or from two threads at once, finds
+// the kept threads taken and starts threads of its own; every item is still done once.
+TEST(ParallelFor, Issue17_HelperThreadsAreKeptForLaterCalls) {
+  thread_local int calls_seen_here = 0;
+  int remembered = 0;
+  // More calls than an earlier test (64 threads) can have kept threads: some kept thread serves
+  // two of them.
+  for (int call = 1; call <= 100; ++call) {
+    std::atomic<bool> seen_before{false};
+    std::vector<int> done(8, 0);
+    parallel_for(8, 2, [&](std::size_t i, unsigned worker) {
+      ++done[i];
+      // Slow enough that the helper takes some items, whenever it wakes.
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+      if (worker == 0) return;
+      if (calls_seen_here > 0 && calls_seen_here < call) seen_before = true;
+      calls_seen_here = call;
+    });
+    EXPECT_EQ(done, std::vector<int>(8, 1)) << "call " << call;
+    remembered += seen_before;
+  }
+  EXPECT_GT(remembered, 10);
+}
+
+TEST(ParallelFor, Issue17_NestedAndConcurrentCallsDoEveryItemOnce) {
+  std::vector<std::atomic<int>> nested(40 * 30);
+  parallel_for(40, 3, [&](std::size_t i, unsigned) {
+    parallel_for(30, 2, [&](std::size_t j, unsigned) { ++nested[i * 30 + j]; });
+  });
+  for (const std::atomic<int>& count : nested) EXPECT_EQ(count, 1);
+  std::vector<std::atomic<int>> first(500), second(500);
+  std::thread other([&] {
+    for (int round = 0; round < 20; ++round) {
+      parallel_for(25, 2, [&](std::size_t i, unsigned) { ++second[round * 25 + i]; });
+    }
+  });
+  for (int round = 0; round < 20; ++round) {
+    parallel_for(25, 2, [&](std::size_t i, unsigned) { ++first[round * 25 + i]; });
+  }
+  other.join();
+  for (std::size_t i = 0; i < 500; ++i) {
+    EXPECT_EQ(first[i], 1) << i;
+    EXPECT_EQ(second[i], 1) << i;
   }
 }
 
