@@ -461,9 +461,10 @@ TEST(EngineLimits, Issue17_ApexShortcutGivesTheSameFitAsTheOutlineQuery) {
 // to fit, nearly all of it in the scans of every start's lines, about 30 each; slicing fits
 // about 20 caps per slice. A line's scan now starts where the nearest scan before it reached
 // (a line moved towards another meets it nearer), and the polygon kept has its apexes checked.
-// Fitting with inferred reaches must give the hulls the exact scans give, on rough discs, stars
-// whose pockets break the argument, crowns and rings of tiny edges, whole and in pieces, with
-// fewer outline queries.
+// Fitting with inferred reaches must give the hulls the exact scans give, on caps of rough discs,
+// stars whose pockets break the argument and crowns, whole and in pieces,
+// with and without a weld, testing fewer apexes; and a cap of a 4,000-gon without a weld (a
+// 5,000-gon at --tau 1% --weld 0 took 153 s).
 TEST(EngineLimits, InferredReachesGiveTheHullsOfTheExactScans) {
   std::mt19937 random(51);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -529,6 +530,20 @@ TEST(EngineLimits, InferredReachesGiveTheHullsOfTheExactScans) {
       }
     }
   }
+  // A cap of a 4,000-gon: turns below a millionth of its size, where without a weld every start
+  // is scanned (see may_close_within_max_verts) and rounding could break the argument.
+  const Ring fine_circle = regular_polygon(4000, 100);
+  Ring cap(fine_circle.begin(), fine_circle.begin() + 400);
+  cap.push_back(0.25 * (cap.front() + cap.back()));
+  const CookedPiece fine_cap = convex_piece_of(cap);
+  const FitterInputs inputs(fine_cap, 2.0);
+  HullFitter inferring = inputs.fitter({8, 0.0}), exact = inputs.fitter({8, 0.0});
+  exact.infer_reaches(false);
+  const std::optional<Ring> fast = inferring.fit(fine_cap.hull);
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_EQ(*fast, exact.fit(fine_cap.hull));
+  EXPECT_LT(inferring.apex_tests() * 4, exact.apex_tests())
+      << inferring.apex_tests() << " apexes tested inferring, " << exact.apex_tests() << " exact";
   EXPECT_GT(compared, 300);
   EXPECT_GT(reduced, 150);
   EXPECT_LT(tests_inferred * 4, tests_exact * 3)

@@ -563,9 +563,10 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   inferring_ = false;
   if (!may_close_within_max_verts(hull)) return std::nullopt;
   // Inferred reaches give the exact scans' polygons wherever the argument holds, and the polygon
-  // kept has its apexes checked: a rough disc's cap of 2,500 vertices took 100 ms to fit, nearly
-  // all of it in the scans of its hull's 250 lines, each reaching about 30 on.
-  if (infer_reaches_ && may_infer_) {
+  // kept has its apexes checked (so also where rounding could break the argument, without a
+  // weld): a rough disc's cap of 2,500 vertices took 100 ms to fit, nearly all of it in the scans
+  // of its hull's 250 lines, each reaching about 30 on.
+  if (infer_reaches_) {
     inferring_ = true;
     inferred_ = false;
     bool refuted = false;
@@ -668,7 +669,6 @@ bool HullFitter::may_close_within_max_verts(const Ring& hull) {
   for (std::size_t k = 0; k < m; ++k) corner_reach_[k] = reach_.distance(hull[k], bound_);
   // Without a weld, edges or turns too small for their lines' meeting points to be computed
   // reliably may remain, where the argument can fail in rounding: then every start is tried.
-  may_infer_ = false;
   if (!(limits_.weld > 0)) {
     const double least = 1e-6 * size_of(hull);
     for (std::size_t k = 0; k < m; ++k) {
@@ -677,7 +677,6 @@ bool HullFitter::may_close_within_max_verts(const Ring& hull) {
       }
     }
   }
-  may_infer_ = true;
   std::size_t current = 0, lines = 1;
   while (lines <= limits_.max_verts + 1) {
     current += reach_from(hull, current, m - current);

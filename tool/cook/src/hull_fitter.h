@@ -135,8 +135,6 @@ class HullFitter {
   std::vector<std::size_t> reach_known_;
   std::vector<char> beyond_after_known_;
   bool infer_reaches_ = true;
-  bool may_infer_ = false;  // whether rounding leaves the argument standing (see
-                            // may_close_within_max_verts)
   bool inferring_ = false;  // whether reach_from infers a scan's first lines from the line before
   bool inferred_ = false;   // whether it did
   mutable std::uint64_t apex_tests_ = 0;
