@@ -62,7 +62,9 @@ std::string cook_replay(const std::filesystem::path& input, const CookCase& sett
          (settings.weld ? " --weld " + number(*settings.weld) : std::string()) +
          (settings.alpha != 128 ? " --alpha " + number(settings.alpha) : std::string()) +
          (settings.simplify ? " --simplify " + number(*settings.simplify) : std::string()) +
-         (settings.merge ? " --merge" : "") + " -o cooked.json";
+         (settings.merge ? " --merge" : "") +
+         (settings.max_verts != 8 ? " --max-verts " + std::to_string(settings.max_verts) : "") +
+         " -o cooked.json";
 }
 
 std::string cook_label(const std::string& name, const CookCase& settings) {
@@ -70,7 +72,8 @@ std::string cook_label(const std::string& name, const CookCase& settings) {
          ", ppu " + number(settings.pixels_per_unit) +
          (settings.alpha != 128 ? ", alpha " + number(settings.alpha) : std::string()) +
          (settings.simplify ? ", simplify " + number(*settings.simplify) : std::string()) +
-         (settings.merge ? ", merge" : "");
+         (settings.merge ? ", merge" : "") +
+         (settings.max_verts != 8 ? ", max-verts " + std::to_string(settings.max_verts) : "");
 }
 
 CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& settings) {
@@ -83,6 +86,7 @@ CaseOutcome cook_and_check(const std::filesystem::path& input, const CookCase& s
   cook_settings.alpha = settings.alpha;
   cook_settings.simplify = settings.simplify;
   cook_settings.merge_pieces = settings.merge;
+  cook_settings.max_verts = settings.max_verts;
   cook_settings.threads = 1;
   auto start = Clock::now();
   try {
@@ -178,7 +182,9 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
     for (const auto& [tau_px, pixels_per_unit] : {std::pair{1.0, 1.0}, {4.0, 1.0}, {1.0, 100.0}}) {
       cooks.push_back(image_cook(tau_px, pixels_per_unit, measure));
     }
-    cooks[cooks.size() - 2].merge = true;  // τ 4 px: the most pieces a merge can join
+    // τ 4 px: the most pieces a merge can join, into hulls of 4 vertices (slicing and halving).
+    cooks[cooks.size() - 2].merge = true;
+    cooks[cooks.size() - 2].max_verts = 4;
     if (family == ImageFamily::soft_edges) {
       CookCase faint = image_cook(0.25, 1.0, measure);
       faint.alpha = 1, faint.simplify = 0.0;
@@ -192,6 +198,9 @@ CookCase polygon_cook(double tau, Measure measure) {
   CookCase cook = image_cook(tau, 1.0, measure);
   if (tau == 0) cook.weld = 0.0;
   cook.merge = tau >= 4;  // as images are at τ 4 px
+  // Fewer vertices per hull than the default at some τ, so that slicing and halving are checked.
+  if (tau >= 4) cook.max_verts = 4;
+  if (tau > 0 && tau < 1) cook.max_verts = 6;
   return cook;
 }
 

@@ -54,20 +54,21 @@ struct CookCase {
   int alpha = 128;                 // --alpha: opaque where alpha >= this
   std::optional<double> simplify;  // --simplify [px]; default tau / 4
   bool merge = false;              // --merge
+  std::size_t max_verts = 8;       // --max-verts
 };
 
 // An image's cook at tau_px and pixels per unit, the other settings the cook's defaults.
 CookCase image_cook(double tau_px, double pixels_per_unit, Measure measure = Measure::h1);
 
-// The cooks an image is judged under, for each measure: tau 1 and 4 px (with --merge) at 1 px
-// per unit, tau 1 px at 100; soft edges also at tau 0.25 px unsimplified at alpha 1 (the faintest
-// pixel is opaque). Without a family, a given sprite's.
+// The cooks an image is judged under, for each measure: tau 1 and 4 px (with --merge and
+// --max-verts 4) at 1 px per unit, tau 1 px at 100; soft edges also at tau 0.25 px unsimplified at
+// alpha 1 (the faintest pixel is opaque). Without a family, a given sprite's.
 std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
                                   std::optional<ImageFamily> family = std::nullopt);
 
 // How polygons are cooked at tau: at tau 0 with weld 0 (no engine hull keeps vertices a weld
-// apart at a tolerance of 0; the pieces are convex and every vertex stays, however close), and
-// from tau 4 on with --merge.
+// apart at a tolerance of 0; the pieces are convex and every vertex stays, however close), below
+// tau 1 with --max-verts 6, and from tau 4 on with --merge and --max-verts 4.
 CookCase polygon_cook(double tau, Measure measure);
 
 // Whether the stress cooks polygons of family at tau: all but the dense family at τ 0. A side of
