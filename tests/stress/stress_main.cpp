@@ -268,7 +268,7 @@ int run(const Options& options) {
   std::printf(", tau");
   for (double tau : options.taus) std::printf(" %g", tau);
   std::printf(
-      "; polygons also cooked at each tau (weld 0 at tau 0, max-verts 6 below tau 1, merge and "
+      "; polygons also cooked at each tau (weld 0 at tau 0, max-verts 3 below tau 1, merge and "
       "max-verts 4 from tau 4); images cooked at tau 1 px, tau 4 px (merge, max-verts 4) and at "
       "tau 1 px with 100 px per unit, soft edges also at tau 0.25 px, alpha 1, simplify 0\n");
   for (const std::string& name : order) print_tally(name, tallies[name]);

@@ -200,7 +200,7 @@ CookCase polygon_cook(double tau, Measure measure) {
   cook.merge = tau >= 4;  // as images are at τ 4 px
   // Fewer vertices per hull than the default at some τ, so that slicing and halving are checked.
   if (tau >= 4) cook.max_verts = 4;
-  if (tau > 0 && tau < 1) cook.max_verts = 6;
+  if (tau > 0 && tau < 1) cook.max_verts = 3;
   return cook;
 }
 

@@ -68,7 +68,7 @@ std::vector<CookCase> image_cooks(const std::vector<Measure>& measures,
 
 // How polygons are cooked at tau: at tau 0 with weld 0 (no engine hull keeps vertices a weld
 // apart at a tolerance of 0; the pieces are convex and every vertex stays, however close), below
-// tau 1 with --max-verts 6, and from tau 4 on with --merge and --max-verts 4.
+// tau 1 with --max-verts 3, and from tau 4 on with --merge and --max-verts 4.
 CookCase polygon_cook(double tau, Measure measure);
 
 // Whether the stress cooks polygons of family at tau: all but the dense family at τ 0. A side of
