@@ -563,9 +563,11 @@ std::optional<Ring> HullFitter::reduce_vertex_count(const Ring& hull) {
   inferring_ = false;
   if (!may_close_within_max_verts(hull)) return std::nullopt;
   // Inferred reaches give the exact scans' polygons wherever the argument holds, and the polygon
-  // kept has its apexes checked (so also where rounding could break the argument, without a
-  // weld): a rough disc's cap of 2,500 vertices took 100 ms to fit, nearly all of it in the scans
-  // of its hull's 250 lines, each reaching about 30 on.
+  // kept has its apexes checked (a pocket under a bridging hull edge, or rounding without a weld,
+  // can break the argument: the polygon kept may then differ, but is valid; a search that keeps
+  // none is not repeated exactly, so such a piece may be cut where the exact scans reduce it). A
+  // rough disc's cap of 2,500 vertices took 100 ms to fit, nearly all of it in the scans of its
+  // hull's 250 lines, each reaching about 30 on.
   if (infer_reaches_) {
     inferring_ = true;
     inferred_ = false;

@@ -21,17 +21,29 @@ namespace {
 // it: a 512 x 512 sprite cooked no faster on two threads than on one (issue 17).
 class WorkerPool {
  public:
+  // The process's pool. At exit its threads are stopped and joined, so that their thread_local
+  // scratch is freed (as a leak checker expects), except in a forked child (the threads are its
+  // parent's, and one may have held the mutex or waited on a condition at the fork) and when exit
+  // is called from inside a job (a kept thread cannot join itself): there the pool, its threads'
+  // handles and its synchronisation are left to the process's end, never destroyed.
   static WorkerPool& instance() {
-    static WorkerPool pool;
-    return pool;
+    struct Owner {
+      WorkerPool* const pool = new WorkerPool;
+      ~Owner() {
+        if (getpid() != pool->owner_ || inside_a_job) return;
+        pool->stop_and_join();
+        delete pool;
+      }
+    };
+    static Owner owner;
+    return *owner.pool;
   }
 
   // Runs job(worker) on the caller (worker 0) and on up to `helpers` kept threads (workers 1, 2,
   // ...), and returns once all have returned; job must return only when no work is left for any
   // worker (a helper that wakes after the caller's part is not given the job). False (nothing
-  // run) when the pool is taken: by
-  // another call on another thread, by a call from inside a job, or in a child process forked
-  // after the pool started its threads.
+  // run) when the pool is taken: by another call on another thread, by a call from inside a job,
+  // or in a child process forked after the pool started its threads.
   bool run(unsigned helpers, const std::function<void(unsigned)>& job) {
     if (inside_a_job || getpid() != owner_ || busy_.exchange(true)) return false;
     {
@@ -64,7 +76,10 @@ class WorkerPool {
     return true;
   }
 
-  ~WorkerPool() {
+ private:
+  WorkerPool() : owner_(getpid()) {}
+
+  void stop_and_join() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       stopping_ = true;
@@ -72,9 +87,6 @@ class WorkerPool {
     wake_.notify_all();
     for (std::thread& thread : threads_) thread.join();
   }
-
- private:
-  WorkerPool() : owner_(getpid()) {}
 
   void serve() {
     inside_a_job = true;  // a kept thread's own calls run without the pool
