@@ -557,6 +557,51 @@ Shape teeth(Random& random) {
   return shape;
 }
 
+// An arm of width `width` wound round the origin: its outer side at radius pitch (1 + θ / 2π),
+// from θ = 0 to 2π turns, and back along its inner side `width` nearer. Between turns its sides
+// are pitch - width apart; a turn of few vertices cuts its curves short by up to
+// r (1 - cos(π / per_turn)), so the turns are limited to keep that under half the gap (and
+// under a third of the margin round the holes, which sit on the arm's centre line).
+Shape spiral(Random& random) {
+  Shape shape;
+  Region region;
+  const double pitch = 1.0;
+  const double width = pitch * random.uniform(0.25, 0.75), gap = pitch - width;
+  const int per_turn = random.pick(std::vector<int>{12, 24, 64, 200});
+  const double sag = 1 - std::cos(kPi / per_turn);
+  const double hole_radius = width / 5, margin = width / 2 - hole_radius;
+  // The outer radius r_max = pitch (1 + turns) keeps r_max * sag within the limits.
+  const double reach = std::min(gap / 2, margin / 3) / sag / pitch - 1;
+  const double turns = std::min(random.uniform(1, 10), std::max(1.0, std::floor(reach * 4) / 4));
+  const bool jittered = random.chance(0.3);
+  const double jitter = jittered ? pitch * random.pick(std::vector<double>{1e-9, 1e-6, 1e-3}) : 0;
+  const int steps = static_cast<int>(std::ceil(turns * per_turn));
+  auto radius = [&](double angle) { return pitch * (1 + angle / (2 * kPi)); };
+  Ring inner;
+  for (int i = 0; i <= steps; ++i) {
+    const double angle = 2 * kPi * turns * i / steps, r = radius(angle);
+    const double outward = jitter * (random.uniform() - 0.5);
+    region.outer.push_back({(r + outward) * std::cos(angle), (r + outward) * std::sin(angle)});
+    inner.push_back({(r - width) * std::cos(angle), (r - width) * std::sin(angle)});
+  }
+  region.outer.insert(region.outer.end(), inner.rbegin(), inner.rend());
+  const int holes = random.integer(1, 4);
+  for (int h = 0; h < holes; ++h) {
+    // Along the arm, away from its ends.
+    const double angle = 2 * kPi * turns * (h + 0.5) / holes;
+    const double r = radius(angle) - width / 2;
+    region.holes.push_back(
+        reversed(regular_polygon({r * std::cos(angle), r * std::sin(angle)}, hole_radius,
+                                 random.integer(3, 16), random.uniform(0, kPi))));
+  }
+  shape.thinnest = std::min({gap, margin, width}) / 2;
+  shape.description << "spiral of " << turns << " turns, " << per_turn << " vertices a turn, arm "
+                    << width << " wide, " << holes << " holes";
+  if (jittered) shape.description << ", outer side jittered by " << jitter;
+  shape.regions.push_back(std::move(region));
+  return shape;
+}
+
 Placement draw_placement(Random& random, double thinnest) {
   Placement placement;
   if (random.chance(0.3)) placement.rotation = random.uniform(0, 2 * kPi);
@@ -585,9 +630,9 @@ double round_to(double x, double step) {
 }  // namespace
 
 const std::vector<Family>& all_families() {
-  static const std::vector<Family> families{Family::thin_wall,     Family::grid,  Family::row,
-                                            Family::ring,          Family::star,  Family::button,
-                                            Family::random_simple, Family::dense, Family::teeth};
+  static const std::vector<Family> families{
+      Family::thin_wall, Family::grid,          Family::row,   Family::ring,  Family::star,
+      Family::button,    Family::random_simple, Family::dense, Family::teeth, Family::spiral};
   return families;
 }
 
@@ -611,6 +656,8 @@ const char* family_name(Family family) {
       return "dense";
     case Family::teeth:
       return "teeth";
+    case Family::spiral:
+      return "spiral";
   }
   return "?";
 }
@@ -672,6 +719,9 @@ GeneratedCase generate_case(Family family, std::uint64_t seed) {
       break;
     case Family::teeth:
       shape = teeth(random);
+      break;
+    case Family::spiral:
+      shape = spiral(random);
       break;
   }
   const Placement placement = draw_placement(random, shape.thinnest);

@@ -24,10 +24,12 @@ enum class Family {
   button,     // a UI button whose few holes nearly fill it (walls 0.2-1.5, notched holes)
   random_simple,  // random points untangled into a simple polygon, on a decimal grid, with
                   // vertices inserted along edges: nearly collinear in binary; no holes
-  dense,  // 300-1500 nearly collinear vertices: a jittered circle or a rectangle bulging out by
-          // 1e-9 to 1e-3 of its size, mostly with 1-3 round holes of 60-600 sides
-  teeth,  // a comb of up to 120 teeth up to 300 long, or a star of up to 300 spikes up to 500
-          // long, with 1-5 holes in its spine or core
+  dense,   // 300-1500 nearly collinear vertices: a jittered circle or a rectangle bulging out by
+           // 1e-9 to 1e-3 of its size, mostly with 1-3 round holes of 60-600 sides
+  teeth,   // a comb of up to 120 teeth up to 300 long, or a star of up to 300 spikes up to 500
+           // long, with 1-5 holes in its spine or core
+  spiral,  // an arm wound 1-10 turns (one pocket winding to the centre), 12-200 vertices a turn,
+           // its outer side maybe jittered (nearly collinear), with 1-4 round holes along it
 };
 
 const std::vector<Family>& all_families();
