@@ -227,5 +227,28 @@ TEST(IndependentCheck, FarFromTheOriginTheToleranceFollowsTheCoordinates) {
   EXPECT_TRUE(report.ok()) << report.summary();
 }
 
+// Spiral stress seed 20261545 (stop 52): at τ 0 without a weld, near (1e5, 1e5), a cook's hull of
+// --max-verts 8 met nearly parallel edge lines and reached 7e-10 beyond one of its component's
+// vertices: within the contract's rounding slack there (a billionth of a thousandth of the
+// largest coordinate: 1e-7), but above the referee's few units in the last place (2.4e-10).
+TEST(IndependentCheck, Spiral20261545_TauAllowsTheContractsRoundingSlackFarFromTheOrigin) {
+  const Vec2 at{1e5, 1e5};
+  const Region region{{at, at + Vec2{0.01, 0}, at + Vec2{0.01, 0.01}, at + Vec2{0, 0.01}}, {}};
+  CheckOptions options = at_tau(0);
+  options.exact_hulls = false;
+  options.engine = EngineRules{8, 0.0, 0.1};
+  for (const double beyond : {7e-10, 5e-8, 5e-7}) {
+    // The hull's corner at `at` moved out along the diagonal, by beyond in x and y.
+    Output grown{{region}, {region.outer}};
+    grown.hulls[0][0] = at - Vec2{beyond, beyond};
+    const CheckReport report = check({region}, grown, options);
+    if (beyond < 1e-7) {
+      EXPECT_TRUE(report.ok()) << beyond << ": " << report.summary();
+    } else {
+      EXPECT_EQ(report.counts.count("tau.component_to_hull"), 1u) << report.summary();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook::stress
