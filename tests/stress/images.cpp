@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace hullcook::stress {
 namespace {
 
 constexpr std::uint8_t kOpaque = 255, kClear = 0;
+constexpr double kPi = std::numbers::pi;
 
 // An alpha canvas; every shape covers the pixels whose centres it contains.
 class Canvas {
@@ -384,6 +386,50 @@ DrawnImage noise_disc(Random& random, std::uint64_t seed) {
   return std::move(canvas).image(ImageFamily::noise_disc, seed, description.str());
 }
 
+// Outlines of thousands of traced vertices, which the simplifier searches by a tree of blocks
+// (rings of 4,096 or more): a comb of 200-600 teeth 1-2 px wide and 1-3 px apart, some shorter,
+// on a spine 3-6 px tall; or an arm 3-8 px wide wound 4-12 turns round a spiral (enough for its
+// sides to run 4,400 px), 2-6 px between turns.
+DrawnImage long_outline(Random& random, std::uint64_t seed) {
+  std::ostringstream description;
+  if (random.chance(0.5)) {
+    const int teeth = random.integer(200, 600), width = random.integer(1, 2);
+    const int gap = random.integer(1, 3), length = random.integer(8, 48);
+    const int spine = random.integer(3, 6);
+    Canvas canvas(teeth * (width + gap) + 2, length + spine + 2);
+    canvas.rectangle(1, 1 + length, teeth * (width + gap) + 1, 1 + length + spine, kOpaque);
+    for (int t = 0; t < teeth; ++t) {
+      const int x = 1 + t * (width + gap);
+      const int tooth = random.chance(0.2) ? random.integer(1, length) : length;
+      canvas.rectangle(x, 1 + length - tooth, x + width, 1 + length, kOpaque);
+    }
+    description << "comb of " << teeth << " teeth " << width << " px wide, " << gap
+                << " px apart, up to " << length << " px long, spine " << spine << " px";
+    return std::move(canvas).image(ImageFamily::long_outline, seed, description.str());
+  }
+  const int arm = random.integer(3, 8), gap = random.integer(2, 6);
+  const double pitch = arm + gap;
+  // Its sides run about 2π pitch turns² px: at least 4,400 px, so that they trace to thousands.
+  const int turns =
+      std::max(random.integer(4, 12), static_cast<int>(std::ceil(std::sqrt(700 / pitch))));
+  const int side = static_cast<int>(2 * pitch * (turns + 1)) + 6;
+  Canvas canvas(side, side);
+  const double centre = side / 2.0;
+  for (int y = 0; y < side; ++y) {
+    for (int x = 0; x < side; ++x) {
+      const double dx = x + 0.5 - centre, dy = y + 0.5 - centre;
+      const double angle = std::atan2(dy, dx) + kPi;  // [0, 2π]
+      // The arm's outer side is at radius pitch (1 + turn + angle / 2π) on turn 0, 1, ...
+      const double v = std::hypot(dx, dy) / pitch - 1 - angle / (2 * kPi);
+      const double turn = std::ceil(v);
+      if (turn >= 0 && turn < turns && v >= turn - arm / pitch) canvas.set(x, y, kOpaque);
+    }
+  }
+  description << "spiral of " << turns << " turns, arm " << arm << " px, " << gap
+              << " px between turns";
+  return std::move(canvas).image(ImageFamily::long_outline, seed, description.str());
+}
+
 }  // namespace
 
 std::size_t images_to_draw(ImageFamily family, std::size_t wanted) {
@@ -397,7 +443,7 @@ const std::vector<ImageFamily>& all_image_families() {
   static const std::vector<ImageFamily> families{
       ImageFamily::tileset,         ImageFamily::frame,      ImageFamily::button,
       ImageFamily::one_pixel_walls, ImageFamily::grid_sheet, ImageFamily::mosaic,
-      ImageFamily::soft_edges,      ImageFamily::noise_disc};
+      ImageFamily::soft_edges,      ImageFamily::noise_disc, ImageFamily::long_outline};
   return families;
 }
 
@@ -419,6 +465,8 @@ const char* image_family_name(ImageFamily family) {
       return "soft_edges";
     case ImageFamily::noise_disc:
       return "noise_disc";
+    case ImageFamily::long_outline:
+      return "long_outline";
   }
   return "?";
 }
@@ -449,6 +497,8 @@ DrawnImage draw_image(ImageFamily family, std::uint64_t seed) {
       return soft_edges(random, seed);
     case ImageFamily::noise_disc:
       return noise_disc(random, seed);
+    case ImageFamily::long_outline:
+      return long_outline(random, seed);
   }
   return grid_sheet(seed);
 }

@@ -26,6 +26,8 @@ enum class ImageFamily {
   noise_disc,       // a disc of value noise whose rim wobbles, holed where the noise is low: holes
                     // walled in by others, whose vertices see no vertex of the rim (issue 17's
                     // noise texture, tex16.png)
+  long_outline,     // a comb of 200-600 teeth or a spiral of 4-12 turns: rings of thousands of
+                    // traced vertices, simplified by the search over a tree of blocks
 };
 
 // How many of a family's images a run of `wanted` per family draws: one grid sheet (every seed

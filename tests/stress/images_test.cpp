@@ -1,5 +1,5 @@
 // The drawn sprites are what they claim: the same image from the same seed, tilesets with many
-// holes, and the 1000x1000 sheet with its 400 cells.
+// holes, the 1000x1000 sheet with its 400 cells, and long outlines of thousands of vertices.
 #include "images.h"
 
 #include "hullcook/trace/trace.h"
@@ -24,6 +24,21 @@ TEST(Images, TilesetsHaveManyHolesAndTheGridSheetIsAThousandPixelsSquare) {
   const TraceResult traced = trace_alpha({sheet.width, sheet.height, sheet.alpha}, settings);
   ASSERT_EQ(traced.regions.size(), 1u);
   EXPECT_EQ(traced.regions[0].holes.size(), 400u);
+}
+
+// Most long outlines trace to a ring of 4,096 vertices or more, which the simplifier searches by
+// its tree of blocks: one region each, without holes.
+TEST(Images, LongOutlinesTraceToThousandsOfVertices) {
+  TraceSettings settings;
+  int long_ones = 0;
+  for (int seed = 0; seed < 20; ++seed) {
+    const DrawnImage image = draw_image(ImageFamily::long_outline, seed);
+    const TraceResult traced = trace_alpha({image.width, image.height, image.alpha}, settings);
+    ASSERT_EQ(traced.regions.size(), 1u) << image.description;
+    EXPECT_TRUE(traced.regions[0].holes.empty()) << image.description;
+    long_ones += traced.traced_vertices >= 4096;
+  }
+  EXPECT_GE(long_ones, 18);
 }
 
 TEST(Images, ASeedNamesOneImage) {
