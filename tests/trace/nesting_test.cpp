@@ -270,5 +270,36 @@ TEST(Simplify, LongRingsKeepThePlainDouglasPeuckerVertices) {
   }
 }
 
+// Review 52: a stretch that runs to the ring's end from inside the block before the ring's short
+// last block (8,300 vertices: blocks of 128 end at 8,192) was bounded by its first block's box
+// alone, and a spike in the last block was dropped: a vertex 94 px from the ring simplified at
+// eps 60. The ring starts (its leftmost vertex) at index 8,100, so that the bottom chain from it
+// wraps past the last index: a deep spike on that chain's first hundred vertices (the last
+// block), a smaller one further on. The top runs back 90 above (more than eps: no simplified edge
+// touches another; less than 94: the bottom's far end stays the vertex farthest from the start)
+// and comes down to the start in steps, so that the start's block lies near the bottom's chord.
+TEST(Simplify, Review52_AStretchEndingInTheShortLastBlockKeepsItsFarthestVertex) {
+  const int n = 8300, leftmost = 8100, right = 4200, steps = 40;
+  auto bottom = [](double x) {
+    if (x > 100 && x < 200) return -100 * (1 - std::abs(x - 150) / 50);
+    if (x > 1150 && x < 1250) return -50 * (1 - std::abs(x - 1200) / 50);
+    return 0.0;
+  };
+  Ring ring(n);
+  const int along = n - leftmost + right;  // the bottom chain's last x
+  for (int k = 0; k <= along; ++k) ring[(leftmost + k) % n] = Vec2{double(k), bottom(k)};
+  const int top = leftmost - right - 1 - steps;
+  for (int k = 0; k < top; ++k) {
+    ring[right + 1 + k] = Vec2{(along - 1) - (along - 3) * k / double(top - 1), 90.0};
+  }
+  for (int k = 0; k < steps; ++k) ring[right + 1 + top + k] = Vec2{1.0, double(steps - k)};
+  ASSERT_GT(signed_area(ring), 0);
+  for (double eps : {60.0, 30.0, 0.5}) {
+    const std::vector<Ring> simplified = simplify_rings({ring}, {-1}, eps);
+    ASSERT_EQ(simplified.size(), 1u);
+    EXPECT_EQ(simplified[0], plain_douglas_peucker(ring, eps)) << "eps " << eps;
+  }
+}
+
 }  // namespace
 }  // namespace hullcook::trace_detail

@@ -282,30 +282,34 @@ class Simplifier {
     auto push_node = [&](int level, int index) {
       push(bound(tree.levels[level][index]), level, index, index + 1);
     };
-    // The range as linear pieces [begin, end), each as its cut blocks and the tree's nodes over
-    // its whole blocks.
+    // The range as linear pieces [begin, end), each as the part of a block it starts in, the
+    // tree's nodes over the whole blocks after, and the part of a block it ends in. A piece that
+    // holds no whole block may still cross a block's end (review 52: one that ran to the ring's
+    // end from inside the block before its short last block was bounded by the first block's box
+    // alone).
     const int pieces[2][2] = {{first, std::min(n, first + count)},
                               {0, std::max(0, first + count - n)}};
     for (const auto& piece : pieces) {
-      const int begin = piece[0], end = piece[1];
-      if (begin >= end) continue;
-      const int whole_begin = (begin + kBlock - 1) / kBlock, whole_end = end / kBlock;
-      if (whole_begin >= whole_end) {
-        push(bound(tree.levels[0][begin / kBlock]), -1, begin, end);
-        continue;
+      int at = piece[0];
+      const int end = piece[1];
+      if (at >= end) continue;
+      if (at % kBlock != 0) {
+        const int head_end = std::min(end, (at / kBlock + 1) * kBlock);
+        push(bound(tree.levels[0][at / kBlock]), -1, at, head_end);
+        at = head_end;
       }
-      if (begin < whole_begin * kBlock) {
-        push(bound(tree.levels[0][begin / kBlock]), -1, begin, whole_begin * kBlock);
+      // The ring's last block, short, is whole when the piece runs to the ring's end.
+      const int whole_end = end == n ? (n + kBlock - 1) / kBlock : end / kBlock;
+      if (at < end && at / kBlock < whole_end) {
+        // The canonical nodes of the blocks [at / kBlock, whole_end), bottom up.
+        for (int level = 0, low = at / kBlock, high = whole_end; low < high;
+             ++level, low >>= 1, high >>= 1) {
+          if (low & 1) push_node(level, low++);
+          if (high & 1) push_node(level, --high);
+        }
+        at = std::min(end, whole_end * kBlock);
       }
-      if (whole_end * kBlock < end) {
-        push(bound(tree.levels[0][whole_end]), -1, whole_end * kBlock, end);
-      }
-      // The canonical nodes of the blocks [whole_begin, whole_end), bottom up.
-      for (int level = 0, low = whole_begin, high = whole_end; low < high;
-           ++level, low >>= 1, high >>= 1) {
-        if (low & 1) push_node(level, low++);
-        if (high & 1) push_node(level, --high);
-      }
+      if (at < end) push(bound(tree.levels[0][at / kBlock]), -1, at, end);
     }
     // The farthest so far: its distance, and its place in the range's order.
     int best_index = -1, best_place = 0;
