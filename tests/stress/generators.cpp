@@ -567,12 +567,15 @@ Shape spiral(Random& random) {
   Region region;
   const double pitch = 1.0;
   const double width = pitch * random.uniform(0.25, 0.75), gap = pitch - width;
-  const int per_turn = random.pick(std::vector<int>{12, 24, 64, 200});
-  const double sag = 1 - std::cos(kPi / per_turn);
   const double hole_radius = width / 5, margin = width / 2 - hole_radius;
-  // The outer radius r_max = pitch (1 + turns) keeps r_max * sag within the limits.
-  const double reach = std::min(gap / 2, margin / 3) / sag / pitch - 1;
-  const double turns = std::min(random.uniform(1, 10), std::max(1.0, std::floor(reach * 4) / 4));
+  // The most turns whose outer radius pitch (1 + turns) keeps the cut within the limits; a turn
+  // of too few vertices for one turn gets twice as many (review 52).
+  int per_turn = random.pick(std::vector<int>{12, 24, 64, 200});
+  auto turns_within = [&] {
+    return std::min(gap / 2, margin / 3) / (1 - std::cos(kPi / per_turn)) / pitch - 1;
+  };
+  while (turns_within() < 1) per_turn *= 2;
+  const double turns = std::min(random.uniform(1, 10), std::floor(turns_within() * 4) / 4);
   const bool jittered = random.chance(0.3);
   const double jitter = jittered ? pitch * random.pick(std::vector<double>{1e-9, 1e-6, 1e-3}) : 0;
   const int steps = static_cast<int>(std::ceil(turns * per_turn));
