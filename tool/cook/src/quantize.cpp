@@ -85,8 +85,13 @@ enum class Attempt { ok, too_coarse, too_wide, too_far, broken_by_floats };
 
 // Why a hull was not stored at a step: the span of a too wide one, or what is too far.
 struct Refusal {
-  double extent = 0.0;  // [output units]
-  std::string too_far;  // the message
+  double extent = 0.0;     // [output units] of the hull too wide, at the step it met
+  float wide_step = 0.0f;  // [output units] that step
+  std::string too_far;     // the message
+  // The last hull too coarse at its step: the one that made the step finer (when it was).
+  std::size_t thin_level = 0, thin_hull = 0;
+  Vec2 thin_at{0.0, 0.0};
+  bool thin_known = false;
 };
 
 // How a hull vertex meets the grid. nearest: the closest grid point. outward: of the corners of
@@ -289,6 +294,7 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
   constexpr std::int64_t kDeltaRange = 65535;  // int16 span
   if (max_x - min_x > kDeltaRange || max_y - min_y > kDeltaRange) {
     refusal.extent = static_cast<double>(std::max(max_x - min_x, max_y - min_y)) * quantum;
+    refusal.wide_step = step;
     return Attempt::too_wide;
   }
   // Centre the base so that deltas fall in [-32768, 32767].
@@ -385,6 +391,10 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
              ++r)
           outcome = quantize_hull(hull, step, bound, kRoundings[r], quantized, refusal);
         if (outcome == Attempt::broken_by_floats) return Attempt::too_far;
+        if (outcome == Attempt::too_coarse) {
+          refusal.thin_level = l, refusal.thin_hull = result.levels[l].size();
+          refusal.thin_at = hull[0], refusal.thin_known = true;
+        }
         if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
       }
@@ -430,17 +440,29 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
   }
   if (outcome == Attempt::too_far) bundle_asset_error(asset, refusal.too_far);
   if (outcome == Attempt::too_wide) {
-    // The step is first halved for a hull that rounds to a segment, a sliver of the outline
-    // that simplifying it (--simplify) or a larger tau removes.
-    bundle_asset_error(
-        asset, "a hull spans " + std::to_string(refusal.extent) +
-                   " output units, more than the 65535 quanta of 16-bit deltas at the required "
-                   "precision of " +
-                   std::to_string(bound) + " units" +
-                   (refined ? " once the step is refined for a hull thinner or smaller than it; "
-                              "cook it with --simplify or a larger tau"
-                            : "; cook it with a larger tau") +
-                   ", or write glTF (.glb), which stores any hull");
+    // Name the step, the quanta and, when the step was made finer, the hull that needed it: the
+    // fix is for that hull (a sliver of the outline that a weld, --simplify or a larger tau
+    // removes), not for the wide one.
+    const double quanta = refusal.extent / static_cast<double>(refusal.wide_step);
+    std::string problem = "a hull spans " + detail::number(refusal.extent) + " output units, " +
+                          detail::number(std::floor(quanta)) + " quanta at a step of " +
+                          detail::number(refusal.wide_step) + " units: more than the 65535 that " +
+                          "16-bit deltas hold";
+    if (refusal.wide_step < first_step && refusal.thin_known) {
+      problem += "; the step is that fine because hull " + std::to_string(refusal.thin_hull) +
+                 " of level " + std::to_string(refusal.thin_level) + ", at " +
+                 detail::point(refusal.thin_at) +
+                 ", is thinner or smaller than a coarser step keeps a polygon within the "
+                 "required precision of " +
+                 detail::number(bound) +
+                 " units; cook it with a weld (--weld, which merges such slivers into their "
+                 "neighbours), a larger --simplify (e.g. 1) or a larger tau, or write glTF "
+                 "(.glb), which stores it if 32-bit floats resolve it";
+    } else {
+      problem += " within the required precision of " + detail::number(bound) +
+                 " units; cook it with a larger tau, or write glTF (.glb), which stores any hull";
+    }
+    bundle_asset_error(asset, problem);
   }
   bundle_asset_error(asset, "a hull is too thin to be stored as a convex polygon within " +
                                 std::to_string(bound) + " output units");
