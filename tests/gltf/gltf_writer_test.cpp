@@ -555,7 +555,14 @@ TEST(GltfWriter, AdversarialHullsThatFloatsFlattenAreRefusedNamingTheAsset) {
     const std::string message = write({quad(0, 0, 1, 1), flat});
     EXPECT_NE(message.find("asset far: hull 1 of level 0"), std::string::npos) << message;
     EXPECT_NE(message.find("thinner than 32-bit floats resolve"), std::string::npos) << message;
+    EXPECT_NE(message.find("--weld"), std::string::npos) << message;
   }
+  // The figures that tell a sliver (a weld merges it) from a hull too far out (--pivot): the
+  // sliver is 1e-12 thick where floats are 2.4e-7 apart (stop 53's sweep of real pixel art
+  // at --weld 0 met a triangle 7.7e-6 px thick at x = -202, where they are 1.5e-5 apart).
+  const std::string message = write({quad(0, 0, 1, 1), sliver});
+  EXPECT_NE(message.find("1.00009e-12 output units thick"), std::string::npos) << message;
+  EXPECT_NE(message.find("(2.38419e-07 apart)"), std::string::npos) << message;
 }
 
 // From the review of that check: it refused only hulls that floats flatten wholly. A 4-gon at

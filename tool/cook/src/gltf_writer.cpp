@@ -154,6 +154,24 @@ std::optional<Ring> as_floats_hold_it(const Ring& hull) {
   return floats;
 }
 
+// The least distance between two parallel lines that hold a convex hull between them.
+double thickness(const Ring& hull) {
+  const std::size_t n = hull.size();
+  double least = n < 3 ? 0.0 : std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n && n >= 3; ++i) {
+    const Vec2 a = hull[i], b = hull[(i + 1) % n];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    if (!(length > 0.0)) continue;
+    double farthest = 0.0;
+    for (const Vec2& p : hull) {
+      farthest =
+          std::max(farthest, std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)));
+    }
+    least = std::min(least, farthest / length);
+  }
+  return std::isfinite(least) ? least : 0.0;
+}
+
 // The asset with its hulls as_floats_hold_it, or nullopt when none changes. Throws OutputError
 // for a hull that floats would flatten to a line or a point where it lies (far from the origin,
 // or far below a float's precision).
@@ -165,12 +183,18 @@ std::optional<CookedAsset> held_by_floats(const CookedAsset& asset) {
       std::optional<Ring> floats = as_floats_hold_it(hulls[h]);
       if (!floats) continue;
       if (floats->empty()) {
-        throw OutputError(
-            "asset " + asset.name + ": hull " + std::to_string(h) + " of level " +
-            std::to_string(l) + ", at " + detail::point(hulls[h][0]) +
-            ", is thinner than 32-bit floats resolve there and would reach a "
-            "reader as a line or a point; move the input nearer the origin "
-            "(for an image, --pivot), or cook it at a larger scale or with a weld (--weld)");
+        double largest = 0.0;
+        for (const Vec2& p : hulls[h]) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+        // A sliver of the outline (the usual case, at --weld 0) is what a weld merges away; a
+        // hull far from the origin is what moving it fixes: the figures tell which.
+        throw OutputError("asset " + asset.name + ": hull " + std::to_string(h) + " of level " +
+                          std::to_string(l) + ", at " + detail::point(hulls[h][0]) + ", " +
+                          detail::number(thickness(hulls[h])) +
+                          " output units thick, is thinner than 32-bit floats resolve there (" +
+                          detail::number(format::float_spacing(largest)) +
+                          " apart) and would reach a reader as a line or a point; cook it with a "
+                          "weld (--weld, which merges such slivers into their neighbours), at a "
+                          "larger scale, or nearer the origin (for an image, --pivot)");
       }
       if (!held) held = asset;
       held->levels[l].hulls[h] = std::move(*floats);
