@@ -2,6 +2,7 @@
 // engine limits, determinism across thread counts, levels of detail and the
 // shape budget.
 #include "contract.h"
+#include "drawn_sprites.h"
 
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
@@ -400,6 +401,56 @@ TEST(Cook, ShapeBudgetCoarserThanALevelOfDetailCountsItLeftOut) {
   // Within the budget at τ 0.5 already: every level kept.
   settings.max_pieces = 1000;
   EXPECT_EQ(cook({sprite}, settings).assets.at(0).lods_left_out, 0u);
+}
+
+// Stop 53's sweep of BrowserQuest's sprites: --max-pieces warned of "τ 5943.95 output units, the
+// coarsest level" for a 416 x 304 image, a figure that read as a mistake. It is the concavity of a
+// region with holes, which Eq. 5 builds up along chains of holes; the warning now says so when τ
+// exceeds the region's size (and only then).
+TEST(Cook, ShapeBudgetWarningExplainsAHoleConcavityBeyondTheRegionsSize) {
+  const auto directory = std::filesystem::temp_directory_path() / "hullcook_budget_holes";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  // A block notched from the top with a 7 x 7 grid of holes, and a second blob.
+  test::DrawnSprite sprite("holes", 140, 120);
+  sprite.box(4, 4, 112, 112);
+  sprite.box(124, 10, 12, 20);
+  for (int y = 4; y < 60; ++y)
+    for (int x = 56; x < 64; ++x) sprite.alpha[std::size_t(y) * 140 + x] = 0;
+  for (int gy = 0; gy < 7; ++gy) {
+    for (int gx = 0; gx < 7; ++gx) {
+      const int x0 = 12 + gx * 14, y0 = 12 + gy * 14;
+      if (x0 >= 50 && x0 <= 66 && y0 < 62) continue;
+      for (int y = y0; y < y0 + 6; ++y)
+        for (int x = x0; x < x0 + 6; ++x) sprite.alpha[std::size_t(y) * 140 + x] = 0;
+    }
+  }
+  const auto with_holes = directory / "holes.png";
+  std::ofstream(with_holes, std::ios::binary) << sprite.png();
+  Settings settings;
+  settings.max_pieces = 1;
+  auto warning_of = [&](const std::filesystem::path& path) {
+    const CookedAsset asset = cook({path}, settings).assets.at(0);
+    for (const std::string& warning : asset.warnings) {
+      if (warning.find("cannot be kept") != std::string::npos) return warning;
+    }
+    return std::string("none");
+  };
+  const std::string explained = warning_of(with_holes);
+  EXPECT_NE(explained.find("keeps 2 pieces"), std::string::npos) << explained;
+  EXPECT_NE(explained.find("more than a region's size, as the concavity of holes"),
+            std::string::npos)
+      << explained;
+  // Without the holes the coarsest τ is within the size: no such note.
+  test::DrawnSprite plain("plain", 140, 120);
+  plain.box(4, 4, 112, 112);
+  plain.box(124, 10, 12, 20);
+  const auto without_holes = directory / "plain.png";
+  std::ofstream(without_holes, std::ios::binary) << plain.png();
+  const std::string plain_warning = warning_of(without_holes);
+  EXPECT_NE(plain_warning.find("keeps 2 pieces"), std::string::npos) << plain_warning;
+  EXPECT_EQ(plain_warning.find("concavity of holes"), std::string::npos) << plain_warning;
+  std::filesystem::remove_all(directory);
 }
 
 // Over many regions the budget is the whole asset's: the smallest of every tree's levels whose
