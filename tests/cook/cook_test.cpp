@@ -405,8 +405,8 @@ TEST(Cook, ShapeBudgetCoarserThanALevelOfDetailCountsItLeftOut) {
 
 // Stop 53's sweep of BrowserQuest's sprites: --max-pieces warned of "τ 5943.95 output units, the
 // coarsest level" for a 416 x 304 image, a figure that read as a mistake. It is the concavity of a
-// region with holes, which Eq. 5 builds up along chains of holes; the warning now says so when τ
-// exceeds the region's size (and only then).
+// region with holes, which Eq. 5 builds up along chains of holes; the warning now says why when τ
+// exceeds the regions' size (and only then: not for one shallow hole, nor without holes).
 TEST(Cook, ShapeBudgetWarningExplainsAHoleConcavityBeyondTheRegionsSize) {
   const auto directory = std::filesystem::temp_directory_path() / "hullcook_budget_holes";
   std::filesystem::remove_all(directory);
@@ -438,9 +438,21 @@ TEST(Cook, ShapeBudgetWarningExplainsAHoleConcavityBeyondTheRegionsSize) {
   };
   const std::string explained = warning_of(with_holes);
   EXPECT_NE(explained.find("keeps 2 pieces"), std::string::npos) << explained;
-  EXPECT_NE(explained.find("more than a region's size, as the concavity of holes"),
+  EXPECT_NE(explained.find("more than a region's size, as concavity is measured along paths"),
             std::string::npos)
       << explained;
+  // One shallow hole: its concavity (Eq. 5) stays below the block's size, and so no note.
+  test::DrawnSprite shallow("shallow", 140, 120);
+  shallow.box(4, 4, 112, 112);
+  shallow.box(124, 10, 12, 20);
+  for (int y = 10; y < 16; ++y)
+    for (int x = 10; x < 16; ++x) shallow.alpha[std::size_t(y) * 140 + x] = 0;
+  const auto shallow_hole = directory / "shallow.png";
+  std::ofstream(shallow_hole, std::ios::binary) << shallow.png();
+  const std::string shallow_warning = warning_of(shallow_hole);
+  EXPECT_NE(shallow_warning.find("keeps 2 pieces"), std::string::npos) << shallow_warning;
+  EXPECT_EQ(shallow_warning.find("more than a region's size"), std::string::npos)
+      << shallow_warning;
   // Without the holes the coarsest τ is within the size: no such note.
   test::DrawnSprite plain("plain", 140, 120);
   plain.box(4, 4, 112, 112);
@@ -449,7 +461,7 @@ TEST(Cook, ShapeBudgetWarningExplainsAHoleConcavityBeyondTheRegionsSize) {
   std::ofstream(without_holes, std::ios::binary) << plain.png();
   const std::string plain_warning = warning_of(without_holes);
   EXPECT_NE(plain_warning.find("keeps 2 pieces"), std::string::npos) << plain_warning;
-  EXPECT_EQ(plain_warning.find("concavity of holes"), std::string::npos) << plain_warning;
+  EXPECT_EQ(plain_warning.find("more than a region's size"), std::string::npos) << plain_warning;
   std::filesystem::remove_all(directory);
 }
 

@@ -551,8 +551,18 @@ TEST(Bundle, AHullSmallerThanAQuantumBesideOneSpanningTheGridIsRefusedWithTheWay
     EXPECT_NE(message.find("more than the 65535 that 16-bit deltas hold"), std::string::npos)
         << message;
     EXPECT_NE(message.find("--weld"), std::string::npos) << message;
-    EXPECT_NE(message.find("--simplify"), std::string::npos) << message;
     EXPECT_NE(message.find("write glTF"), std::string::npos) << message;
+    // --simplify bounds a traced outline's error: no advice for a polygon file's asset.
+    EXPECT_EQ(message.find("--simplify"), std::string::npos) << message;
+  }
+  CookedAsset traced = test::make_asset("speck", {{1.0, hulls}});
+  traced.image_width = traced.image_height = 64;
+  try {
+    write_bundle({traced});
+    FAIL() << "stored";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("a larger --simplify"), std::string::npos) << message;
   }
 }
 

@@ -365,25 +365,25 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
     // user learns here rather than from the bundle.
     const std::size_t budget_pieces = decomposer->piece_count_at(budget_tau);
     if (budget_pieces > settings.max_pieces) {
-      // A region's holes can make it more concave than it is large (Eq. 5 adds the depths of holes
-      // reached through others): said, or the figure reads as a mistake.
+      // A region can be more concave than it is large (a spiral's paths wind through its
+      // pockets; Eq. 5 adds the depths of holes reached through others): said, or the figure
+      // reads as a mistake. Above every region's size, it is so of the region that set it.
       double largest_diagonal = 0.0;
-      bool has_holes = false;
       for (const Region& region : regions) {
         Vec2 low = region.outer.front(), high = low;
         for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
         largest_diagonal = std::max(largest_diagonal, glm::length(high - low));
-        has_holes = has_holes || !region.holes.empty();
       }
-      const bool beyond_size = has_holes && budget_tau > largest_diagonal;
       asset.warnings.push_back(
           "--max-pieces " + std::to_string(settings.max_pieces) + " cannot be kept: its " +
           std::to_string(regions.size()) + " regions are one piece each at least, so it keeps " +
           std::to_string(budget_pieces) + " pieces (τ " + detail::number(budget_tau) +
           " output units, the coarsest level" +
-          (beyond_size ? ": more than a region's size, as the concavity of holes (the paper's "
-                         "Eq. 5) adds the depths of holes reached through other holes"
-                       : "") +
+          (budget_tau > largest_diagonal
+               ? ": more than a region's size, as concavity is measured along paths that wind "
+                 "through a region's pockets, and a hole's (the paper's Eq. 5) adds the depths "
+                 "of holes reached through other holes"
+               : "") +
           ")");
     }
     if (budget_tau > level_taus.front()) {

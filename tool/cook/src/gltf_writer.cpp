@@ -23,6 +23,8 @@
 #include "hullcook/core/predicates.h"
 #include "hullcook/format/bundle_layout.h"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -154,20 +156,24 @@ std::optional<Ring> as_floats_hold_it(const Ring& hull) {
   return floats;
 }
 
-// The least distance between two parallel lines that hold a convex hull between them.
+// The least distance between two parallel lines that hold a convex hull between them: over its
+// edges, the spread of its vertices across the edge's line (signed, so that a hull against the
+// contract is not measured thinner than it is; the direction normalised first, so that tiny
+// coordinates do not underflow).
 double thickness(const Ring& hull) {
   const std::size_t n = hull.size();
-  double least = n < 3 ? 0.0 : std::numeric_limits<double>::infinity();
+  double least = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n && n >= 3; ++i) {
-    const Vec2 a = hull[i], b = hull[(i + 1) % n];
-    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    const Vec2 a = hull[i], along = hull[(i + 1) % n] - a;
+    const double length = glm::length(along);
     if (!(length > 0.0)) continue;
-    double farthest = 0.0;
+    const Vec2 unit = along / length;
+    double low = 0.0, high = 0.0;
     for (const Vec2& p : hull) {
-      farthest =
-          std::max(farthest, std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)));
+      const double across = unit.x * (p.y - a.y) - unit.y * (p.x - a.x);
+      low = std::min(low, across), high = std::max(high, across);
     }
-    least = std::min(least, farthest / length);
+    least = std::min(least, high - low);
   }
   return std::isfinite(least) ? least : 0.0;
 }
@@ -183,18 +189,32 @@ std::optional<CookedAsset> held_by_floats(const CookedAsset& asset) {
       std::optional<Ring> floats = as_floats_hold_it(hulls[h]);
       if (!floats) continue;
       if (floats->empty()) {
+        const Ring& hull = hulls[h];
+        // The asset's size: the nearest the origin a pivot can bring its farthest hull is about
+        // half of it.
+        Vec2 low = hull[0], high = hull[0];
+        for (const CookedLevel& level : asset.levels) {
+          for (const Ring& ring : level.hulls) {
+            for (const Vec2& p : ring) low = glm::min(low, p), high = glm::max(high, p);
+          }
+        }
         double largest = 0.0;
-        for (const Vec2& p : hulls[h]) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-        // A sliver of the outline (the usual case, at --weld 0) is what a weld merges away; a
-        // hull far from the origin is what moving it fixes: the figures tell which.
+        for (const Vec2& p : hull) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+        const double thick = thickness(hull), spacing = format::float_spacing(largest);
+        // A hull thinner than floats resolve wherever a pivot puts the asset is a sliver of the
+        // outline, which a weld removes; a thicker one is too far out.
+        const bool sliver = thick <= format::float_spacing(0.5 * glm::length(high - low));
+        const std::string figures =
+            ", " + detail::number(thick) + " output units thick where 32-bit floats are " +
+            detail::number(spacing) + " apart, would reach a reader as a " + "line or a point; ";
+        const std::string advice =
+            sliver ? "it is a sliver: cook it with a larger tau or a weld (--weld, at least " +
+                         detail::number(spacing) +
+                         " units, with tau above 0: a piece thinner than the weld is merged into a "
+                         "neighbour or given a hull that wide, within tau)"
+                   : "move it nearer the origin (for an image, --pivot), where floats are finer";
         throw OutputError("asset " + asset.name + ": hull " + std::to_string(h) + " of level " +
-                          std::to_string(l) + ", at " + detail::point(hulls[h][0]) + ", " +
-                          detail::number(thickness(hulls[h])) +
-                          " output units thick, is thinner than 32-bit floats resolve there (" +
-                          detail::number(format::float_spacing(largest)) +
-                          " apart) and would reach a reader as a line or a point; cook it with a "
-                          "weld (--weld, which merges such slivers into their neighbours), at a "
-                          "larger scale, or nearer the origin (for an image, --pivot)");
+                          std::to_string(l) + ", at " + detail::point(hull[0]) + figures + advice);
       }
       if (!held) held = asset;
       held->levels[l].hulls[h] = std::move(*floats);

@@ -454,13 +454,16 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
                  detail::point(refusal.thin_at) +
                  ", is thinner or smaller than a coarser step keeps a polygon within the "
                  "required precision of " +
-                 detail::number(bound) +
-                 " units; cook it with a weld (--weld, which merges such slivers into their "
-                 "neighbours), a larger --simplify (e.g. 1) or a larger tau, or write glTF "
-                 "(.glb), which stores it if 32-bit floats resolve it";
+                 detail::number(bound) + " units; cook it with a larger tau" +
+                 // --simplify bounds the traced outline's error [px]: images only.
+                 (asset.image_width > 0 ? ", a larger --simplify" : "") +
+                 " or a weld (--weld, with tau above 0: a piece thinner than the weld is merged "
+                 "into a neighbour or given a hull that wide, within tau), or write glTF (.glb), "
+                 "which stores that hull if 32-bit floats resolve it";
     } else {
       problem += " within the required precision of " + detail::number(bound) +
-                 " units; cook it with a larger tau, or write glTF (.glb), which stores any hull";
+                 " units; cook it with a larger tau, or write glTF (.glb), which stores any hull "
+                 "that 32-bit floats resolve";
     }
     bundle_asset_error(asset, problem);
   }
