@@ -300,6 +300,39 @@ TEST(TraceFormats, FullyTransparentImageGivesAWarningAndNoRegion) {
   EXPECT_THAT(result.warnings[0], HasSubstr("fully transparent"));
 }
 
+// Stop 53's sweep of SuperTux Advance's sprites: a CRT overlay whose every pixel has alpha 1-127
+// was called "fully transparent", and a sheet of lone opaque pixels said "every blob is smaller
+// than --min-blob-area 4 px²" and then "nothing opaque"; --min-blob-area 1 still dropped them (a
+// lone pixel traces to half a px²). The warnings now give the figure that decides: the most
+// opaque pixel's alpha, and the largest blob's area.
+TEST(TraceFormats, FaintImagesAndSpecksAreToldWithTheFigureThatDecides) {
+  const auto dir = test::scratch_dir("trace_faint");
+  // Traces the image at the defaults: no region and one warning, which has the figure; then
+  // traced with the setting the figure suggests, regions regions.
+  auto expect_told = [&](const char* name, const cv::Mat& image, const std::string& figure,
+                         const TraceSettings& suggested, std::size_t regions) {
+    write_bytes(dir / name, encoded(".png", image));
+    const TraceResult result = trace_image(dir / name, TraceSettings{});
+    EXPECT_TRUE(result.regions.empty()) << name;
+    ASSERT_EQ(result.warnings.size(), 1u) << name;
+    EXPECT_THAT(result.warnings[0], HasSubstr(figure));
+    EXPECT_EQ(trace_image(dir / name, suggested).regions.size(), regions) << name;
+  };
+  TraceSettings at_100;
+  at_100.alpha = 100;
+  expect_told("faint.png", cv::Mat(16, 24, CV_8UC4, cv::Scalar(200, 100, 50, 100)),
+              "no pixel reaches --alpha 128 (the most opaque has alpha 100): no region traced",
+              at_100, 1);
+  cv::Mat specks(16, 24, CV_8UC4, cv::Scalar(200, 100, 50, 0));
+  for (int y = 1; y < 16; y += 4)
+    for (int x = 1; x < 24; x += 4) specks.at<cv::Vec4b>(y, x)[3] = 255;
+  TraceSettings keeping;
+  keeping.min_blob_area = 0.5;
+  expect_told("specks.png", specks,
+              "every blob is smaller than --min-blob-area 4 px² (the largest is 0.5 px²)", keeping,
+              24);
+}
+
 TEST(TraceFormats, ImageFilesAreToldByExtension) {
   for (const char* name : {"a.png", "b.PNG", "c.tga", "d.bmp", "e.WebP"})
     EXPECT_TRUE(is_image_file(name));

@@ -54,7 +54,7 @@ void print_summary(const CookResult& result) {
 }
 
 // Warnings go to stderr even with -q, which only drops the table: a pipeline must still see
-// "nothing opaque" or a piece left out.
+// "no region" or a piece left out.
 void print_warnings(const CookResult& result) {
   for (const CookedAsset& asset : result.assets) {
     for (const std::string& warning : asset.warnings) {

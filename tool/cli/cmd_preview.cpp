@@ -51,7 +51,8 @@ int run_preview(const CLI::App& command, PreviewCommand& preview) {
       is_image_file(preview.input) ? preview.input : std::filesystem::path{};
   render_preview(image, asset, preview.output);
   std::cout << preview.output.string() << ": " << asset.stats.traced_vertices
-            << " vertices traced, " << asset.pieces.size() << " pieces\n";
+            << " vertices traced, " << asset.stats.pieces << " pieces, " << asset.stats.hulls
+            << " hulls\n";
   return 0;
 }
 

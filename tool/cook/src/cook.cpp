@@ -448,9 +448,11 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
         asset.stats.max_concavity = std::max(asset.stats.max_concavity, piece.concavity);
       }
     }
+    auto limits_start = Clock::now();
     std::vector<CookedPiece> constrained =
         apply_engine_limits(to_cooked(std::move(pieces), &level_regions[l]), tau, limits, split,
                             where, threads, merge_width, true, settings.merge_pieces);
+    asset.stats.limits_ms += milliseconds_since(limits_start);
     auto contract_start = Clock::now();
     const ContractTerms terms{tau, decompose_settings.measure, limits};
     for (std::string& violation : find_contract_violations(constrained, regions, terms, threads)) {
@@ -469,7 +471,8 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   }
   enforce_contract(where, violations);
   asset.stats.hulls = asset.levels.empty() ? 0 : asset.levels.front().hulls.size();
-  if (regions.empty()) asset.warnings.push_back("nothing opaque: the asset has no hulls");
+  // The tracer said why (transparent, faint or specks only): this only says what follows.
+  if (regions.empty()) asset.warnings.push_back("no region: the asset has no hulls");
   asset.stats.total_ms = milliseconds_since(start);
   return asset;
 }

@@ -48,11 +48,9 @@ std::string cook_report(const CookResult& result, bool with_timings) {
                   {"max_concavity", asset.stats.max_concavity},
                   {"bundle_bytes", asset_bytes}};
     if (with_timings) {
-      entry["ms"] = {{"decode", asset.stats.decode_ms},
-                     {"trace", asset.stats.trace_ms},
-                     {"decompose", asset.stats.decompose_ms},
-                     {"contract", asset.stats.contract_ms},
-                     {"total", asset.stats.total_ms}};
+      entry["ms"] = {{"decode", asset.stats.decode_ms},       {"trace", asset.stats.trace_ms},
+                     {"decompose", asset.stats.decompose_ms}, {"limits", asset.stats.limits_ms},
+                     {"contract", asset.stats.contract_ms},   {"total", asset.stats.total_ms}};
     }
     if (!asset.warnings.empty()) entry["warnings"] = asset.warnings;
     assets.push_back(std::move(entry));

@@ -307,13 +307,19 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
 
   std::vector<Ring> rings = march(image, threshold, settings.threads);
   if (rings.empty()) {
-    // With a colour key, the alpha traced is 0 at the key and the image's own elsewhere.
+    // With a colour key, the alpha traced is 0 at the key and the image's own elsewhere. An
+    // image of faint pixels is not transparent: its most opaque pixel says what --alpha traces it.
+    const int most =
+        image.alpha.empty() ? 0 : *std::max_element(image.alpha.begin(), image.alpha.end());
     result.warnings.push_back(
         settings.color_key
             ? "fully transparent (every pixel is the colour key, or has alpha below " +
                   std::to_string(threshold) + "): no region traced"
-            : "fully transparent (no pixel with alpha >= " + std::to_string(threshold) +
-                  "): no region traced");
+        : most == 0
+            ? "fully transparent (no pixel with alpha >= " + std::to_string(threshold) +
+                  "): no region traced"
+            : "no pixel reaches --alpha " + std::to_string(threshold) +
+                  " (the most opaque has alpha " + std::to_string(most) + "): no region traced");
     result.trace_ms = milliseconds_since(start);
     return result;
   }
@@ -383,10 +389,15 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
   });
 
   if (result.regions.empty()) {
-    char area[32];
+    // The largest blob's area tells what --min-blob-area would keep it: a lone pixel traces to
+    // half a px² (stop 53's sweep: --min-blob-area 1 still dropped a sheet of single pixels).
+    double largest = 0.0;
+    for (int r = 0; r < count; ++r) largest = std::max(largest, areas[r]);
+    char area[32], blob[32];
     std::snprintf(area, sizeof area, "%g", settings.min_blob_area);
+    std::snprintf(blob, sizeof blob, "%g", largest);
     result.warnings.push_back(std::string("every blob is smaller than --min-blob-area ") + area +
-                              " px²: no region traced");
+                              " px² (the largest is " + blob + " px²): no region traced");
   }
   result.trace_ms = milliseconds_since(start);
   return result;

@@ -61,8 +61,9 @@ struct CookedStats {
   double max_concavity = 0.0;  // [output units]
   double convexity = 1.0;      // Eq. 9 of the paper: Σ area(C) / Σ area(hull(C))
   double decompose_ms = 0.0;
-  double decode_ms = 0.0;    // reading and decoding the image file
-  double trace_ms = 0.0;     // tracing and simplifying the outline, decoding excluded
+  double decode_ms = 0.0;  // reading and decoding the image file
+  double trace_ms = 0.0;   // tracing and simplifying the outline, decoding excluded
+  double limits_ms = 0.0;  // fitting hulls to the engine limits (--max-verts, --weld), every level
   double contract_ms = 0.0;  // checking the output's contract, every level
   double total_ms = 0.0;
 };
