@@ -64,6 +64,8 @@ TEST_F(GridCli, EveryNonEmptyCellIsAnAssetInItsOwnCoordinates) {
   auto result = run_hullcook("cook " + (directory / "art").string() + kGrid + " -o " +
                              (directory / "out.json").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
+  // The opaque margin, spacing and spare last column are no cell's, and no warning's either.
+  EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
   const json assets = json::parse(read_bytes(directory / "out.json"))["assets"];
   ASSERT_EQ(assets.size(), kRectangles.size());
   for (const json& asset : assets) {
@@ -180,6 +182,63 @@ TEST_F(GridCli, GridsThatCutNothingAreRefused) {
   EXPECT_EQ(run_hullcook("cook " + sheet + " --grid 8x" + out).exit_code,
             static_cast<int>(ExitCode::usage));
   EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+}
+
+// A sheet one cell too narrow for its art, or cut with the wrong --grid, loses whatever lies
+// beyond the last whole cell: the cook says how many opaque pixels, and where.
+TEST_F(GridCli, OpaquePixelsBeyondTheLastWholeCellAreToldWithTheirCount) {
+  // 100 x 80 px cut into 32 px cells: 3 columns and 2 rows, x >= 96 and y >= 64 left over.
+  constexpr int kSheetWidth = 100, kSheetHeight = 80;
+  auto sheet = [&](const std::vector<std::array<int, 4>>& rectangles) {
+    std::vector<std::uint8_t> pixels(kSheetWidth * kSheetHeight * 4, 0);
+    for (const std::array<int, 4>& r : rectangles) {
+      for (int y = r[1]; y < r[3]; ++y) {
+        for (int x = r[0]; x < r[2]; ++x) pixels[(y * kSheetWidth + x) * 4 + 3] = 255;
+      }
+    }
+    return test::make_png(kSheetWidth, kSheetHeight, 6, pixels);
+  };
+  const fs::path partial = directory / "partial.png", beyond_only = directory / "beyond_only.png";
+  // A sprite in cell 0; 3 x 10 px in the right strip and 10 x 16 in the bottom one, the corner
+  // 4 x 4 counted once.
+  std::ofstream(partial, std::ios::binary)
+      << sheet({{4, 4, 28, 28}, {97, 10, 100, 20}, {10, 64, 20, 80}, {96, 76, 100, 80}});
+  std::ofstream(beyond_only, std::ios::binary) << sheet({{97, 10, 100, 20}});
+  const std::string out = " -o " + (directory / "out.hcb").string();
+  auto warned = run_hullcook("cook " + partial.string() + " --grid 32 -q" + out);
+  ASSERT_EQ(warned.exit_code, 0) << warned.output;
+  EXPECT_NE(warned.output.find("hullcook: warning: " + partial.string() +
+                               ": 206 opaque pixels lie beyond the last whole cell (x >= 96 or "
+                               "y >= 64 of a 100x80 image), where --grid 32x32 --margin 0 "
+                               "--spacing 0 fits 3 columns and 2 rows: they are in no asset"),
+            std::string::npos)
+      << warned.output;
+  // With a margin the strips stop short of the far margin: 31 px cells at margin 1 and spacing 1
+  // fit the same columns and rows, and the far margin's pixels (x = 99, y = 79) are no strip's.
+  auto margin =
+      run_hullcook("cook " + partial.string() + " --grid 31 --margin 1 --spacing 1 -q" + out);
+  ASSERT_EQ(margin.exit_code, 0) << margin.output;
+  // Right strip x 97..98 above y 65 (2 x 10), bottom strip y 65..78 across x 0..98 (10 x 14,
+  // and 3 x 3 of the corner square): 20 + 140 + 9.
+  EXPECT_NE(margin.output.find(": 169 opaque pixels lie beyond the last whole cell (x >= 97 or "
+                               "y >= 65 of a 100x80 image), where --grid 31x31 --margin 1 "
+                               "--spacing 1 fits 3 columns and 2 rows"),
+            std::string::npos)
+      << margin.output;
+  // Every cell empty: the refusal says where the art is, and writes nothing.
+  fs::remove(directory / "out.hcb");
+  auto refused = run_hullcook("cook " + beyond_only.string() + " --grid 32" + out);
+  EXPECT_EQ(refused.exit_code, static_cast<int>(ExitCode::bad_input)) << refused.output;
+  EXPECT_NE(refused.output.find(beyond_only.string() +
+                                ": every cell of the grid is empty (--grid, --alpha); 30 opaque "
+                                "pixels lie beyond the last whole cell (x >= 96 or y >= 64"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  // A grid that fits the art leaves nothing beyond: no warning.
+  auto fitted = run_hullcook("cook " + partial.string() + " --grid 20 -q" + out);
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.output;
+  EXPECT_EQ(fitted.output.find("beyond the last whole cell"), std::string::npos) << fitted.output;
 }
 
 }  // namespace

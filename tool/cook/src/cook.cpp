@@ -480,25 +480,45 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
 // A grid's empty cells are no assets. A sheet whose every cell is empty is refused when no input
 // gave an asset, as a directory without images is (a wrong --grid or --alpha, most likely), and
 // is a warning among sheets that did: a folder of tilesets may hold an overlay left transparent
-// (Wesnoth's terrain grid.png), which is no reason to stop its cook.
-void drop_empty_cells(const std::vector<InputFile>& files, CookResult& result) {
+// (Wesnoth's terrain grid.png), which is no reason to stop its cook. Opaque pixels beyond the
+// last whole cell are in no asset: a warning says where, or the refusal does.
+void drop_empty_cells(const std::vector<InputFile>& files, const Settings& settings,
+                      CookResult& result) {
   std::vector<CookedAsset> kept;
   std::vector<std::size_t> kept_index;
-  std::map<std::string, bool> sheet_has_cells;
+  struct SheetCells {
+    bool has_cells = false;
+    const InputFile* first = nullptr;
+  };
+  std::map<std::string, SheetCells> sheets;
   for (std::size_t i = 0; i < files.size(); ++i) {
     // By its hulls: the regions may be freed already (Settings::keep_outlines).
     const CookedAsset& asset = result.assets[i];
     const bool cell = files[i].sheet && !files[i].frames;  // a sheet JSON's frames are kept
     const bool empty_cell = cell && asset.stats.hulls == 0;
-    if (cell) sheet_has_cells[files[i].path] |= !empty_cell;
+    if (cell) {
+      SheetCells& sheet = sheets[files[i].path];
+      sheet.has_cells |= !empty_cell;
+      if (!sheet.first) sheet.first = &files[i];
+    }
     if (!empty_cell) {
       kept.push_back(std::move(result.assets[i]));
       kept_index.push_back(result.cooked_index[i]);
     }
   }
-  for (const auto& [sheet, has_cells] : sheet_has_cells) {
-    if (has_cells) continue;
-    const std::string problem = sheet + ": every cell of the grid is empty (--grid, --alpha)";
+  for (const auto& [path, sheet] : sheets) {
+    const InputFile& file = *sheet.first;
+    const int alpha = (file.own ? *file.own : settings).alpha;
+    const UncoveredPixels uncovered = uncovered_pixels(*file.sheet, *settings.grid, alpha);
+    const std::string beyond =
+        uncovered.opaque == 0 ? "" : describe_uncovered(uncovered, *file.sheet, *settings.grid);
+    if (sheet.has_cells) {
+      if (!beyond.empty())
+        result.warnings.push_back(path + ": " + beyond + ": they are in no asset");
+      continue;
+    }
+    const std::string problem = path + ": every cell of the grid is empty (--grid, --alpha)" +
+                                (beyond.empty() ? "" : "; " + beyond);
     if (kept.empty()) throw InputError(problem);
     result.warnings.push_back(problem + ": the sheet gives no asset");
   }
@@ -631,7 +651,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }
-  if (settings.grid) drop_empty_cells(files, result);
+  if (settings.grid) drop_empty_cells(files, settings, result);
   return result;
 }
 

@@ -2,6 +2,8 @@
 
 #include "hullcook/core/error.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 
 namespace hullcook {
@@ -18,6 +20,58 @@ std::vector<GridCell> grid_cells(int width, int height, const Grid& grid) {
     }
   }
   return cells;
+}
+
+UncoveredPixels uncovered_pixels(const AlphaImage& image, const Grid& grid, int alpha) {
+  UncoveredPixels uncovered;
+  uncovered.from_x = image.width, uncovered.from_y = image.height;
+  // The same steps as grid_cells, in 64 bits: a margin and spacing near the int range.
+  auto whole = [&](int size, int cell, long long& next) {
+    int count = 0;
+    next = grid.margin;
+    for (; next + cell <= size; next += cell + grid.spacing) ++count;
+    return count;
+  };
+  long long next_x = 0, next_y = 0;
+  uncovered.columns = whole(image.width, grid.cell_width, next_x);
+  uncovered.rows = whole(image.height, grid.cell_height, next_y);
+  if (uncovered.columns == 0 || uncovered.rows == 0) return uncovered;
+  // Up to the far margin: Tiled's margin runs round the whole sheet.
+  if (next_x < static_cast<long long>(image.width) - grid.margin) {
+    uncovered.from_x = static_cast<int>(next_x);
+  }
+  if (next_y < static_cast<long long>(image.height) - grid.margin) {
+    uncovered.from_y = static_cast<int>(next_y);
+  }
+  const int to_x = std::max(uncovered.from_x, image.width - grid.margin);
+  const int to_y = std::max(uncovered.from_y, image.height - grid.margin);
+  for (int y = 0; y < to_y; ++y) {
+    const std::uint8_t* row = image.alpha.data() + static_cast<std::size_t>(y) * image.width;
+    // A row of the bottom strip counts across the width; the others only in the right strip.
+    for (int x = y >= uncovered.from_y ? 0 : uncovered.from_x; x < to_x; ++x) {
+      if (row[x] >= alpha) ++uncovered.opaque;
+    }
+  }
+  return uncovered;
+}
+
+std::string describe_uncovered(const UncoveredPixels& uncovered, const AlphaImage& image,
+                               const Grid& grid) {
+  std::string where;
+  if (uncovered.from_x < image.width) where = "x >= " + std::to_string(uncovered.from_x);
+  if (uncovered.from_y < image.height) {
+    where +=
+        (where.empty() ? "" : " or ") + std::string("y >= ") + std::to_string(uncovered.from_y);
+  }
+  auto count = [](int n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  return std::to_string(uncovered.opaque) + " opaque pixel" + (uncovered.opaque == 1 ? "" : "s") +
+         " lie beyond the last whole cell (" + where + " of a " + std::to_string(image.width) +
+         "x" + std::to_string(image.height) + " image), where --grid " +
+         std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) + " --margin " +
+         std::to_string(grid.margin) + " --spacing " + std::to_string(grid.spacing) + " fits " +
+         count(uncovered.columns, "column") + " and " + count(uncovered.rows, "row");
 }
 
 AlphaImage crop(const AlphaImage& image, const GridCell& cell) {
