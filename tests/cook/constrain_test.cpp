@@ -329,7 +329,21 @@ TEST(Issue16, PieceTooSmallForTheWeldBelowTauIsAnInputErrorNamingTheAsset) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("tiny.png"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("--weld"), std::string::npos) << error.what();
+    // The width decides, not the area the message starts with: the triangle is 0.002 / sqrt(2)
+    // wide across its long side, and the advice names that figure.
+    EXPECT_NE(std::string(error.what())
+                  .find("is 0.00141421 units wide, thinner than the weld distance 0.005"),
+              std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("lower --weld below 0.00141421 (its width)"),
+              std::string::npos)
+        << error.what();
   }
+  // The advice holds: a weld below that width takes the piece.
+  const std::vector<CookedPiece> welded = apply_engine_limits(
+      {convex_piece(tiny)}, 0.0001, EngineLimits{8, 0.0014}, no_split, "tiny.png");
+  expect_within(welded, 0.0001, EngineLimits{8, 0.0014});
+  EXPECT_NEAR(area_of(welded), 0.000002, 1e-12);
 }
 
 TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {

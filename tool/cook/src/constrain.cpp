@@ -773,10 +773,14 @@ class Constrainer {
               << " holes could not be split into pieces that fit the engine limits";
       throw std::logic_error(message.str());
     }
-    message << " is thinner than the weld distance " << limits_.weld
-            << " and can be neither merged into a neighbour nor given an engine-ready hull "
+    // Its width decides (is_small): a weld below it makes the piece an ordinary one, which
+    // always fits.
+    const double width = width_of(slot.piece.hull);
+    message << " is " << width << " units wide, thinner than the weld distance " << limits_.weld
+            << ", and can be neither merged into a neighbour nor given an engine-ready hull "
                "within tau = "
-            << tau_ << " output units; lower --weld, or raise --tau or lower --ppu";
+            << tau_ << " output units; lower --weld below " << width
+            << " (its width), or raise --tau or lower --ppu";
     throw InputError(message.str());
   }
 
