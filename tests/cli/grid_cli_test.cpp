@@ -177,6 +177,38 @@ TEST_F(GridCli, GridsThatCutNothingAreRefused) {
   ASSERT_EQ(alone.exit_code, 0) << alone.output;
   EXPECT_EQ(read_bytes(directory / "out.hcb"), read_bytes(directory / "alone.hcb"));
   fs::remove(directory / "out.hcb");
+  // Every image too small for the grid is named (up to five) or counted, in name order, so that
+  // one cook shows them all; a folder of nothing else is no "folder without images".
+  const fs::path small = directory / "small";
+  fs::create_directories(small / "sub");
+  for (const char* name : {"e.png", "b.png", "sub/a.png", "d.png", "c.png", "g.png", "f.png"}) {
+    std::ofstream(small / name, std::ios::binary)
+        << test::make_png(4, 6, 6, std::vector<std::uint8_t>(4 * 6 * 4, 255));
+  }
+  auto misfits = run_hullcook("cook " + small.string() + " --grid 8" + out);
+  EXPECT_EQ(misfits.exit_code, static_cast<int>(ExitCode::bad_input)) << misfits.output;
+  EXPECT_NE(misfits.output.find(
+                "hullcook: error: " + (small / "b.png").string() +
+                ": a 4x6 image holds no whole 8x8 cell at margin 0 (--grid, --margin); nor do 6 "
+                "more images: " +
+                (small / "c.png").string() + " (4x6), " + (small / "d.png").string() + " (4x6), " +
+                (small / "e.png").string() + " (4x6), " + (small / "f.png").string() + " (4x6), " +
+                (small / "g.png").string() + " (4x6), ...\n"),
+            std::string::npos)
+      << misfits.output;
+  // Broken sheets are decoded as the inputs are collected: the error names the first by name,
+  // not the first the file system lists.
+  const fs::path broken = directory / "broken";
+  fs::create_directories(broken);
+  for (const char* name : {"h.png", "c.png", "f.png", "b.png", "g.png", "e.png", "d.png"}) {
+    std::ofstream(broken / name, std::ios::binary) << "not a png";
+  }
+  auto first_broken = run_hullcook("cook " + broken.string() + " --grid 8" + out);
+  EXPECT_EQ(first_broken.exit_code, static_cast<int>(ExitCode::bad_input)) << first_broken.output;
+  EXPECT_NE(first_broken.output.find("hullcook: error: " + (broken / "b.png").string() + ": "),
+            std::string::npos)
+      << first_broken.output;
+  EXPECT_FALSE(fs::exists(directory / "out.hcb"));
   EXPECT_EQ(run_hullcook("cook " + sheet + " --margin 1" + out).exit_code,
             static_cast<int>(ExitCode::usage));
   EXPECT_EQ(run_hullcook("cook " + sheet + " --grid 8x" + out).exit_code,

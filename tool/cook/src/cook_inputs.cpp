@@ -42,11 +42,42 @@ void add_sheet_frames(std::vector<InputFile>& files, const std::filesystem::path
   }
 }
 
+// An image that holds no whole cell of the grid.
+struct GridMisfit {
+  std::string path;
+  int width = 0, height = 0;  // [px]
+};
+
+// Refuses the inputs when an image holds no whole cell (a wrong --grid or --margin, most likely,
+// or an image that is no sheet): the first in name order, and how many more, so that one cook
+// shows them all.
+void refuse_grid_misfits(const std::vector<GridMisfit>& misfits, const Grid& grid) {
+  if (misfits.empty()) return;
+  auto size = [](const GridMisfit& misfit) {
+    return std::to_string(misfit.width) + "x" + std::to_string(misfit.height);
+  };
+  const GridMisfit& first = misfits.front();
+  std::string message = first.path + ": a " + size(first) + " image holds no whole " +
+                        std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) +
+                        " cell at margin " + std::to_string(grid.margin) + " (--grid, --margin)";
+  if (misfits.size() > 1) {
+    constexpr std::size_t kNamed = 5;
+    message += "; nor do " + std::to_string(misfits.size() - 1) + " more image" +
+               (misfits.size() == 2 ? "" : "s") + ": ";
+    for (std::size_t i = 1; i < misfits.size() && i <= kNamed; ++i) {
+      message += (i > 1 ? ", " : "") + misfits[i].path + " (" + size(misfits[i]) + ")";
+    }
+    if (misfits.size() - 1 > kNamed) message += ", ...";
+  }
+  throw InputError(message);
+}
+
 // Adds an input file; with --grid an image adds its cells instead, named NAME/INDEX (Tiled's
 // row-major tile number), sorted by name as link sorts assets. The sheet is decoded here, once.
 void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& path,
                     const std::string& name, const Settings& settings,
-                    AssetSettings& asset_settings, std::vector<std::filesystem::path>& skipped) {
+                    AssetSettings& asset_settings, std::vector<std::filesystem::path>& skipped,
+                    std::vector<GridMisfit>& misfits) {
   // Malformed settings are not reported here but when the asset is cooked, in input order (a
   // directory is walked in no particular order).
   std::shared_ptr<const Settings> own;
@@ -80,10 +111,8 @@ void add_input_file(std::vector<InputFile>& files, const std::filesystem::path& 
   const Grid& grid = *settings.grid;
   const std::vector<GridCell> cells = grid_cells(sheet->width, sheet->height, grid);
   if (cells.empty()) {
-    throw InputError(path.string() + ": a " + std::to_string(sheet->width) + "x" +
-                     std::to_string(sheet->height) + " image holds no whole " +
-                     std::to_string(grid.cell_width) + "x" + std::to_string(grid.cell_height) +
-                     " cell at margin " + std::to_string(grid.margin) + " (--grid, --margin)");
+    misfits.push_back({path.string(), sheet->width, sheet->height});
+    return;
   }
   const std::size_t first = files.size();
   for (const GridCell& cell : cells) {
@@ -113,6 +142,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
                                       ListedFiles& listed,
                                       std::vector<std::filesystem::path>& skipped) {
   std::vector<InputFile> files;
+  std::vector<GridMisfit> misfits;
   for (const std::filesystem::path& input : inputs) {
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) {
@@ -140,10 +170,19 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
       listed.seal();
-      for (const std::filesystem::path& image : images) {
-        add_input_file(found, image, image.lexically_relative(input).generic_string(), settings,
-                       asset_settings, skipped);
+      // In name order, as the assets are cooked: a sheet or atlas is decoded here, and of two
+      // broken ones the error named whichever the file system listed first.
+      std::vector<std::pair<std::string, std::filesystem::path>> named;
+      named.reserve(images.size());
+      for (std::filesystem::path& image : images) {
+        named.emplace_back(image.lexically_relative(input).generic_string(), std::move(image));
       }
+      std::sort(named.begin(), named.end());
+      for (const auto& [name, image] : named) {
+        add_input_file(found, image, name, settings, asset_settings, skipped, misfits);
+      }
+      // Its images are there, but too small for the grid: that is what to say.
+      if (found.empty() && !misfits.empty()) refuse_grid_misfits(misfits, *settings.grid);
       // Likely a wrong path (or polygons, which are only read when named): an empty bundle would
       // hide it.
       if (found.empty() && skipped.size() > skipped_before) {
@@ -162,12 +201,13 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
                    std::make_move_iterator(found.end()));
     } else if (std::filesystem::is_regular_file(input, error)) {
       add_input_file(files, input, input.filename().generic_string(), settings, asset_settings,
-                     skipped);
+                     skipped, misfits);
     } else {
       refuse_unless_regular_file(input);
       throw InputError(input.string() + ": no such file or directory");
     }
   }
+  if (!misfits.empty()) refuse_grid_misfits(misfits, *settings.grid);
   std::set<std::string> names;
   for (const InputFile& file : files) {
     if (!names.insert(file.name).second) {
