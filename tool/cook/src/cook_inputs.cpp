@@ -150,6 +150,9 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
       const std::size_t skipped_before = skipped.size();
       // The whole walk first: the images' sidecars are then looked up in its listing.
       std::vector<std::filesystem::path> images;
+      // The entries named as images that cannot be read, by path: the first by name is refused
+      // once the walk is over (the file system lists them in no particular order).
+      std::vector<std::pair<std::string, std::string>> unreadable;
       for (auto it = std::filesystem::recursive_directory_iterator(input, error);
            !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
         listed.add(it->path());
@@ -160,15 +163,24 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         } else if (is_image_file(it->path()) && it->is_symlink(entry_error) &&
                    !it->exists(entry_error)) {
           // An asset moved or renamed under its link: left out, the game would miss it.
-          throw InputError(it->path().string() + ": a broken symbolic link (to " +
-                           std::filesystem::read_symlink(it->path(), entry_error).string() + ")");
+          unreadable.emplace_back(
+              it->path().generic_string(),
+              it->path().string() + ": a broken symbolic link (to " +
+                  std::filesystem::read_symlink(it->path(), entry_error).string() + ")");
         } else if (is_image_file(it->path())) {
           // A pipe or a device named as an image: left out, the game would miss an asset; read,
           // it may block or never end.
-          refuse_unless_regular_file(it->path());
+          try {
+            refuse_unless_regular_file(it->path());
+          } catch (const InputError& refused) {
+            unreadable.emplace_back(it->path().generic_string(), refused.what());
+          }
         }
       }
       if (error) throw InputError(input.string() + ": cannot read directory: " + error.message());
+      if (!unreadable.empty()) {
+        throw InputError(std::min_element(unreadable.begin(), unreadable.end())->second);
+      }
       listed.seal();
       // In name order, as the assets are cooked: a sheet or atlas is decoded here, and of two
       // broken ones the error named whichever the file system listed first.
