@@ -63,8 +63,8 @@ void expect_meshopt_file_holds(const std::vector<CookedAsset>& assets, bool bina
       for (std::size_t h = 0; h < hulls.size(); ++h) {
         // The hull's vertices in order, but those that rounding left repeated, collinear or
         // reflex: each written vertex is a cooked one rounded, the written ring is strictly
-        // convex and counter-clockwise on the grid and holds every cooked vertex rounded; or,
-        // where the grid flattens the hull to a line or a point, every vertex as it was.
+        // convex and counter-clockwise on the grid and holds every cooked vertex rounded. No
+        // hull is flattened to a line or a point (the step is finer where one would be).
         ASSERT_LE(counts[h], hulls[h].size());
         ASSERT_GE(counts[h], 1u);
         std::vector<std::array<std::int64_t, 2>> ring, rounded;
@@ -91,7 +91,7 @@ void expect_meshopt_file_holds(const std::vector<CookedAsset>& assets, bool bina
           flat = flat && cross(rounded[0], rounded[i + 1], rounded[i + 2]) == 0;
         }
         if (flat) {
-          EXPECT_EQ(m, hulls[h].size()) << asset.name << " hull " << h;
+          ADD_FAILURE() << asset.name << " hull " << h << " is a line or a point on the grid";
           continue;
         }
         double turning = 0;
@@ -167,8 +167,49 @@ TEST(GltfMeshopt, HullsWhoseExtentSetsTheStepAreWritten) {
   ASSERT_GT(extent / (extent / 65000.0), 65000.0);
   CookedAsset asset = test::base_asset("wide");
   asset.pixels_per_unit = 1.0;
-  asset.levels.push_back({asset.tau, {{{0.0, 0.0}, {extent, 0.0}, {extent, 3.0}, {0.0, 7.0}}}});
+  // Thick enough for that step (66 units): a thinner hull makes the step finer, or is refused.
+  asset.levels.push_back(
+      {asset.tau, {{{0.0, 0.0}, {extent, 0.0}, {extent, 3000.0}, {0.0, 7000.0}}}});
   expect_meshopt_file_holds({asset}, true);
+}
+
+// The sweep of stop 54 (Godot's demo sprites at --tau 0 --weld 0): 24 of the 719 hulls of a
+// 1280 px image reached readers with zero area (4 points on one line), at exit 0, where the bundle
+// refused the same cook. A hull thinner than the step now makes the step finer; where the
+// asset's span leaves no finer step in 16 bits, the cook is refused with the figures.
+TEST(GltfMeshopt, Sweep54_AHullThinnerThanTheStepIsWrittenOnAFinerGridOrRefused) {
+  CookedAsset thin = test::base_asset("thin");
+  const Ring sliver{{0.0, 0.0}, {1.0, 0.0}, {0.5, 0.0002}};
+  thin.levels.push_back({thin.tau, {{{-1.0, -1.0}, {0.0, -1.0}, {0.0, -0.5}}, sliver}});
+  // The bundle's step would flatten the sliver: about the box's centre, (0, -0.4999), its three
+  // vertices round to one row.
+  const double coarse = test::largest_meshopt_step(thin);
+  ASSERT_EQ(std::llround((0.0 + 0.4999) / coarse), std::llround((0.0002 + 0.4999) / coarse));
+  expect_meshopt_file_holds({thin}, true);
+  const test::Parsed parsed =
+      test::parse(write_gltf({thin}, {.binary = true, .meshopt = true}), true);
+  EXPECT_LT(parsed.root["nodes"][0]["scale"][0].get<double>(), coarse);
+
+  // 60,002 units wide: no step under 60002 / 65532 fits 16 bits.
+  CookedAsset wide = thin;
+  wide.name = "wide";
+  wide.levels[0].hulls = {{{-1.0, -1.0}, {3000.0, -1.0}, {0.0, 3000.0}},
+                          sliver,
+                          {{60000.0, 0.0}, {60001.0, 0.0}, {60001.0, 1.0}}};
+  try {
+    write_gltf({wide}, {.binary = true, .meshopt = true});
+    ADD_FAILURE() << "a hull the grid flattens was written";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("asset wide: hull 1 of level 0, at (0, 0), 0.0002 output units "
+                           "thick, would reach a reader as a line or a point on the 16-bit grid "
+                           "of --meshopt: the asset spans 60002 units, so no step finer than "
+                           "0.915614 holds it; write it without --meshopt"),
+              std::string::npos)
+        << message;
+  }
+  // Without --meshopt its floats hold it.
+  EXPECT_NO_THROW(write_gltf({wide}, {.binary = true}));
 }
 
 TEST(GltfMeshopt, SameBytesEveryRun) {

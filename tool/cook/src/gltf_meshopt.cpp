@@ -1,7 +1,9 @@
 #include "gltf_meshopt.h"
 
+#include "contract_text.h"
 #include "hullcook/cook/meshopt_library.h"
 #include "hullcook/core/error.h"
+#include "hullcook/core/geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +39,35 @@ Quantization Quantization::of(const CookedAsset& asset) {
       extent / grid.step > kQuantaAboutTheOrigin) {
     throw OutputError("asset " + asset.name + ": its hulls do not fit a 16-bit grid");
   }
-  return grid;
+  // A hull thinner than the step would reach a reader as a line or a point (zero area, which
+  // physics engines refuse or mistake): the step is halved until every hull keeps its area, as
+  // long as the asset's span fits 16 bits.
+  for (;;) {
+    std::size_t flat_level = 0, flat_hull = 0;
+    const Ring* flat = nullptr;
+    for (std::size_t l = 0; l < asset.levels.size() && !flat; ++l) {
+      const std::vector<Ring>& hulls = asset.levels[l].hulls;
+      for (std::size_t h = 0; h < hulls.size() && !flat; ++h) {
+        if (grid.flattens(hulls[h])) flat = &hulls[h], flat_level = l, flat_hull = h;
+      }
+    }
+    if (!flat) return grid;
+    const double finer = 0.5 * grid.step;
+    if (extent / finer <= kQuantaAboutTheOrigin) {
+      grid.step = finer;
+      continue;
+    }
+    const double least_step = extent / kQuantaAboutTheOrigin;
+    throw OutputError(
+        "asset " + asset.name + ": hull " + std::to_string(flat_hull) + " of level " +
+        std::to_string(flat_level) + ", at " + detail::point((*flat)[0]) + ", " +
+        detail::number(convex_thickness(*flat)) +
+        " output units thick, would reach a reader as a line or a point on the 16-bit grid of "
+        "--meshopt: the asset spans " +
+        detail::number(extent) + " units, so no step finer than " + detail::number(least_step) +
+        " holds it; write it without --meshopt, whose 32-bit floats hold it, or cook it with a "
+        "larger tau, which leaves fewer thin pieces");
+  }
 }
 
 std::int16_t Quantization::x(double value) const {
@@ -47,20 +77,22 @@ std::int16_t Quantization::y(double value) const {
   return static_cast<std::int16_t>(std::lround((value - origin.y) / step));
 }
 
-Ring Quantization::held(const Ring& hull) const {
-  struct GridPoint {
-    std::int64_t x, y;
-  };
-  std::vector<GridPoint> rounded;
-  rounded.reserve(hull.size());
-  for (const Vec2& v : hull) rounded.push_back({x(v.x), y(v.y)});
+namespace {
+
+struct GridPoint {
+  std::int64_t x, y;
+};
+
+// The vertices of hull (as indices) that are left once those whose rounded points do not turn
+// left are left out, one at a time: leaving out such a vertex keeps it in the ring (on or inside
+// the new edge), so once every vertex turns left the ring holds all of them. Fewer than 3: the
+// rounded hull is a line or a point.
+std::vector<std::size_t> turning_left(const std::vector<GridPoint>& rounded) {
   auto turns_left = [&](std::size_t a, std::size_t b, std::size_t c) {
     const GridPoint p = rounded[a], q = rounded[b], r = rounded[c];
     return (q.x - p.x) * (r.y - q.y) - (q.y - p.y) * (r.x - q.x) > 0;  // exact: |values| < 2^17
   };
-  // Leaving out a vertex that does not turn left keeps it in the ring (on or inside the new
-  // edge), so once every vertex turns left the ring holds all of them.
-  std::vector<std::size_t> kept(hull.size());
+  std::vector<std::size_t> kept(rounded.size());
   for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = i;
   for (bool changed = true; changed && kept.size() >= 3;) {
     changed = false;
@@ -74,6 +106,25 @@ Ring Quantization::held(const Ring& hull) const {
       }
     }
   }
+  return kept;
+}
+
+}  // namespace
+
+bool Quantization::flattens(const Ring& hull) const {
+  // Rounding takes nothing from a hull without area (or clockwise, against the contract).
+  if (!(signed_area(hull) > 0.0)) return false;
+  std::vector<GridPoint> rounded;
+  rounded.reserve(hull.size());
+  for (const Vec2& v : hull) rounded.push_back({x(v.x), y(v.y)});
+  return turning_left(rounded).size() < 3;
+}
+
+Ring Quantization::held(const Ring& hull) const {
+  std::vector<GridPoint> rounded;
+  rounded.reserve(hull.size());
+  for (const Vec2& v : hull) rounded.push_back({x(v.x), y(v.y)});
+  const std::vector<std::size_t> kept = turning_left(rounded);
   if (kept.size() < 3 || kept.size() == hull.size()) return hull;
   // Turning left at every vertex, it is convex if it winds once (a sum of exterior angles of 2π,
   // not 4π or more).

@@ -18,6 +18,7 @@
 #include "contract_text.h"
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
+#include "hullcook/core/geometry.h"
 
 #include "hullcook/core/error.h"
 #include "hullcook/core/predicates.h"
@@ -156,28 +157,6 @@ std::optional<Ring> as_floats_hold_it(const Ring& hull) {
   return floats;
 }
 
-// The least distance between two parallel lines that hold a convex hull between them: over its
-// edges, the spread of its vertices across the edge's line (signed, so that a hull against the
-// contract is not measured thinner than it is; the direction normalised first, so that tiny
-// coordinates do not underflow).
-double thickness(const Ring& hull) {
-  const std::size_t n = hull.size();
-  double least = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n && n >= 3; ++i) {
-    const Vec2 a = hull[i], along = hull[(i + 1) % n] - a;
-    const double length = glm::length(along);
-    if (!(length > 0.0)) continue;
-    const Vec2 unit = along / length;
-    double low = 0.0, high = 0.0;
-    for (const Vec2& p : hull) {
-      const double across = unit.x * (p.y - a.y) - unit.y * (p.x - a.x);
-      low = std::min(low, across), high = std::max(high, across);
-    }
-    least = std::min(least, high - low);
-  }
-  return std::isfinite(least) ? least : 0.0;
-}
-
 // The asset with its hulls as_floats_hold_it, or nullopt when none changes. Throws OutputError
 // for a hull that floats would flatten to a line or a point where it lies (far from the origin,
 // or far below a float's precision).
@@ -200,7 +179,7 @@ std::optional<CookedAsset> held_by_floats(const CookedAsset& asset) {
         }
         double largest = 0.0;
         for (const Vec2& p : hull) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-        const double thick = thickness(hull), spacing = format::float_spacing(largest);
+        const double thick = convex_thickness(hull), spacing = format::float_spacing(largest);
         // A hull thinner than floats resolve wherever a pivot puts the asset is a sliver of the
         // outline, which a weld removes; a thicker one is too far out.
         const bool sliver = thick <= format::float_spacing(0.5 * glm::length(high - low));

@@ -30,6 +30,24 @@ double region_area(const Region& region) {
   return area;
 }
 
+double convex_thickness(const Ring& ring) {
+  const std::size_t n = ring.size();
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n && n >= 3; ++i) {
+    const Vec2 a = ring[i], along = ring[(i + 1) % n] - a;
+    const double length = std::hypot(along.x, along.y);
+    if (!(length > 0.0)) continue;
+    const Vec2 unit = along / length;
+    double low = 0.0, high = 0.0;
+    for (const Vec2& p : ring) {
+      const double across = unit.x * (p.y - a.y) - unit.y * (p.x - a.x);
+      low = std::min(low, across), high = std::max(high, across);
+    }
+    least = std::min(least, high - low);
+  }
+  return std::isfinite(least) ? least : 0.0;
+}
+
 namespace {
 
 // Akl-Toussaint: the extreme points in eight directions span a convex polygon inside the hull; a

@@ -14,6 +14,12 @@ double signed_area(const Ring& ring);
 // Area of a region: outer minus holes [units²]. Assumes a cleaned region.
 double region_area(const Region& region);
 
+// The least distance between two parallel lines that hold a convex ring between them [units]:
+// over its edges, the spread of its vertices across the edge's line (signed, so that a ring
+// against the rules is not measured thinner than it is; each direction normalised first, so that
+// tiny coordinates do not underflow). 0 for fewer than 3 vertices or no edge of any length.
+double convex_thickness(const Ring& ring);
+
 // Convex hull of a point set, counter-clockwise, without repeated or collinear vertices,
 // starting at the lowest-x (then lowest-y) point. Fewer than 3 points come back when the input
 // is degenerate (all equal: 1 point; all collinear: the 2 extreme points).
