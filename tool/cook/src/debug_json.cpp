@@ -253,16 +253,10 @@ std::string debug_json(const std::vector<CookedAsset>& assets) {
     json.number(asset.stats.max_concavity);
     out += ", \"convexity\": ";
     json.number(asset.stats.convexity);
-    out += ", \"decompose_ms\": ";
-    json.number(asset.stats.decompose_ms);
+    // No timings: they differ from run to run, and the same inputs and settings give the same
+    // bytes (--report has them).
     out += ", \"traced_vertices\": ";
     json.integer(asset.stats.traced_vertices);
-    out += ", \"decode_ms\": ";
-    json.number(asset.stats.decode_ms);
-    out += ", \"trace_ms\": ";
-    json.number(asset.stats.trace_ms);
-    out += ", \"contract_ms\": ";
-    json.number(asset.stats.contract_ms);
     out += "}}";
   }
   out += "\n ]}\n";
