@@ -265,7 +265,7 @@ const char* status_string(Status status) noexcept {
     case Status::io_error:
       return "the file could not be opened or read";
     case Status::truncated:
-      return "truncated (shorter than the bundle's header says)";
+      return "truncated (shorter than the 64-byte header, or than the size the header records)";
     case Status::misaligned:
       return "misaligned (the buffer or a section is not 4-byte aligned)";
     case Status::bad_magic:

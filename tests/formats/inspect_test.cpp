@@ -96,6 +96,10 @@ TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
   corrupt[200] ^= 0x40;
   const fs::path checksum = write("corrupt.hcb", corrupt);
   const fs::path truncated = write("truncated.hcb", bytes.substr(0, 100));
+  // Shorter than the header itself: the message said "shorter than the bundle's header says"
+  // of a file with no header to say anything (a helper's sweep, stop 54).
+  const fs::path empty = write("empty.hcb", "");
+  const fs::path ten_bytes = write("ten_bytes.hcb", bytes.substr(0, 10));
   const fs::path text =
       write("text.hcb", "hello, this is not a bundle at all, but long enough for a header!");
   const struct {
@@ -103,6 +107,8 @@ TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
     std::string words;
   } cases[] = {{checksum, "bad checksum"},
                {truncated, "truncated"},
+               {empty, "truncated (shorter than the 64-byte header"},
+               {ten_bytes, "truncated (shorter than the 64-byte header"},
                {text, "not a hullcook bundle"},
                {work_dir() / "missing.hcb", "could not be opened"}};
   for (const auto& c : cases) {
