@@ -190,7 +190,18 @@ TEST(TraceFormats, BadImagesGiveAnInputErrorNamingTheFileAndTheProblem) {
   write_bytes(dir / "truncated.png", good.substr(0, good.size() / 2));
   expect_refused(dir / "truncated.png", "truncated PNG");
   write_bytes(dir / "header_only.png", good.substr(0, 20));
-  expect_refused(dir / "header_only.png", "truncated PNG");
+  expect_refused(dir / "header_only.png", "truncated PNG (the file ends inside the IHDR header)");
+  // Where the file ends, as the sweep of stop 54 asked: after the signature alone it ended
+  // "inside the IHDR header", and one byte short it ended "before the IEND chunk", which was
+  // there but for its checksum's last byte.
+  write_bytes(dir / "signature_only.png", good.substr(0, 8));
+  expect_refused(dir / "signature_only.png",
+                 "truncated PNG (the file ends after the signature, before the IHDR header)");
+  write_bytes(dir / "one_byte_short.png", good.substr(0, good.size() - 1));
+  expect_refused(dir / "one_byte_short.png",
+                 "truncated PNG (the file ends at byte " + std::to_string(good.size() - 1) +
+                     ", inside the IEND chunk at byte " + std::to_string(good.size() - 12) +
+                     ", the end of the image)");
 
   write_bytes(dir / "empty.png", test::encode_png(0, 0, 8, 6, {}));
   expect_refused(dir / "empty.png", "empty image (0x0");

@@ -52,7 +52,11 @@ struct Header {
 Header read_header(const std::string& bytes, const std::string& name) {
   static const char png_signature[] = "\x89PNG\r\n\x1a\n";
   if (bytes.size() >= 8 && bytes.compare(0, 8, png_signature, 8) == 0) {
-    if (bytes.size() < 33) fail(name, "truncated PNG (the file ends inside the IHDR header)");
+    if (bytes.size() < 33) {
+      fail(name, bytes.size() == 8 ? "truncated PNG (the file ends after the signature, before "
+                                     "the IHDR header)"
+                                   : "truncated PNG (the file ends inside the IHDR header)");
+    }
     if (read_u32_be(bytes, 8) != 13 || bytes.compare(12, 4, "IHDR") != 0) {
       fail(name, "corrupt PNG (the first chunk is not a 13-byte IHDR)");
     }

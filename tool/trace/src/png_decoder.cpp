@@ -21,8 +21,14 @@ void check_png_chunks(const std::string& bytes, const std::string& name) {
   std::size_t at = 8;
   while (true) {
     if (at + 12 > bytes.size()) {
+      // Where the file ends inside a chunk's 12 bytes of framing, the chunk is named when its
+      // type is there (a file cut in IEND's checksum lacks only the last bytes of the end).
+      const std::string type = at + 8 <= bytes.size() ? bytes.substr(at + 4, 4) : "";
       fail(name, "truncated PNG (the file ends at byte " + std::to_string(bytes.size()) +
-                     " before the IEND chunk)");
+                     (type.empty() || at == bytes.size()
+                          ? " before the IEND chunk)"
+                          : ", inside the " + type + " chunk at byte " + std::to_string(at) +
+                                (type == "IEND" ? ", the end of the image)" : ")")));
     }
     const std::uint64_t length = u32_be(bytes, at);
     const std::string type = bytes.substr(at + 4, 4);
