@@ -147,7 +147,7 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
     std::error_code error;
     if (std::filesystem::is_directory(input, error)) {
       std::vector<InputFile> found;
-      const std::size_t skipped_before = skipped.size();
+      const std::size_t skipped_before = skipped.size(), misfits_before = misfits.size();
       // The whole walk first: the images' sidecars are then looked up in its listing.
       std::vector<std::filesystem::path> images;
       // The entries named as images that cannot be read, by path: the first by name is refused
@@ -194,7 +194,9 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
         add_input_file(found, image, name, settings, asset_settings, skipped, misfits);
       }
       // Its images are there, but too small for the grid: that is what to say.
-      if (found.empty() && !misfits.empty()) refuse_grid_misfits(misfits, *settings.grid);
+      if (found.empty() && misfits.size() > misfits_before) {
+        refuse_grid_misfits(misfits, *settings.grid);
+      }
       // Likely a wrong path (or polygons, which are only read when named): an empty bundle would
       // hide it.
       if (found.empty() && skipped.size() > skipped_before) {
