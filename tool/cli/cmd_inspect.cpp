@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "counted.h"
 #include "inspect.h"
+#include "shortest.h"
 
 #include "hullcook/cook/debug_json.h"
 #include "hullcook/runtime.h"
@@ -24,26 +25,6 @@ namespace hullcook::cli {
 namespace {
 
 namespace rt = hullcook::runtime;
-
-// A float as the double of its shortest decimal form, so that 0.6f prints as 0.6 and parsing
-// the printed text gives the float back.
-double shortest_double(float value) {
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::strtod(std::string(text.data(), result.ptr).c_str(), nullptr);
-}
-
-std::string shortest_text(double value) {
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::string(text.data(), result.ptr);
-}
-
-std::string shortest_text(float value) {
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::string(text.data(), result.ptr);
-}
 
 std::string point_text(rt::Vec2 p) {
   return "(" + shortest_text(p.x) + ", " + shortest_text(p.y) + ")";

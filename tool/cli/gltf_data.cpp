@@ -1,5 +1,7 @@
 #include "gltf_data.h"
 
+#include "shortest.h"
+
 #include "hullcook/cook/meshopt_library.h"
 
 #include <array>
@@ -49,13 +51,6 @@ std::string decode_base64(std::string_view text, const std::string& where) {
     }
   }
   return out;
-}
-
-// A float as the double of its shortest decimal form (0.6f reads as 0.6).
-double float_number(float value) {
-  std::array<char, 32> text{};
-  auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::strtod(std::string(text.data(), result.ptr).c_str(), nullptr);
 }
 
 // A non-negative integer property, `fallback` when absent.
@@ -131,7 +126,7 @@ double read_component(const char* at, int type) {
     default: {
       float v;
       std::memcpy(&v, at, 4);
-      return float_number(v);
+      return shortest_double(v);
     }
   }
 }

@@ -4,6 +4,7 @@
 #include "counted.h"
 #include "gltf_data.h"
 #include "inspect.h"
+#include "shortest.h"
 
 #include "hullcook/cook/asset.h"
 #include "hullcook/cook/debug_json.h"
@@ -29,19 +30,6 @@ namespace {
 using json = nlohmann::json;
 
 constexpr int kExtrasVersion = 2;  // the newest extras schema this reader knows
-
-std::string shortest(double value) {
-  std::array<char, 32> text{};
-  auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::string(text.data(), result.ptr);
-}
-
-// A float as the double of its shortest decimal form (0.6f prints as 0.6).
-double float_number(float value) {
-  std::array<char, 32> text{};
-  auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::strtod(std::string(text.data(), result.ptr).c_str(), nullptr);
-}
 
 std::uint32_t read_u32(const std::string& bytes, std::size_t offset) {
   std::uint32_t value = 0;
@@ -350,7 +338,9 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   return contents;
 }
 
-std::string point_text(Vec2 p) { return "(" + shortest(p.x) + ", " + shortest(p.y) + ")"; }
+std::string point_text(Vec2 p) {
+  return "(" + shortest_text(p.x) + ", " + shortest_text(p.y) + ")";
+}
 
 void print_text(const std::filesystem::path& path, const GltfContents& contents) {
   std::size_t hulls = 0, vertices = 0;
@@ -368,29 +358,29 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
             << counted(hulls, "hull", "hulls") << ", "
             << counted(vertices, "hull vertex", "hull vertices") << " over all levels";
   if (vertices > 0) {
-    std::cout << ", " << shortest(std::round(10.0 * contents.bytes / vertices) / 10.0)
+    std::cout << ", " << shortest_text(std::round(10.0 * contents.bytes / vertices) / 10.0)
               << " bytes per vertex";
   }
   std::cout << "\n";
   for (const CookedAsset& asset : contents.assets) {
     std::cout << "asset \"" << asset.name << "\": source " << asset.source << ", image "
               << asset.image_width << "x" << asset.image_height << " px, "
-              << shortest(asset.pixels_per_unit) << " px/unit, pivot " << point_text(asset.pivot)
-              << ", measure " << asset.measure << ", tau " << shortest(asset.tau) << "\n";
+              << shortest_text(asset.pixels_per_unit) << " px/unit, pivot "
+              << point_text(asset.pivot) << ", measure " << asset.measure << ", tau "
+              << shortest_text(asset.tau) << "\n";
     if (asset.physics) {
       const PhysicsProperties& p = *asset.physics;
       char bits[32];
       std::snprintf(bits, sizeof bits, "0x%04x, mask 0x%04x", p.category_bits, p.mask_bits);
-      std::cout << "  physics: density " << shortest(float_number(p.density)) << ", friction "
-                << shortest(float_number(p.friction)) << ", restitution "
-                << shortest(float_number(p.restitution)) << ", sensor " << (p.sensor ? "yes" : "no")
-                << ", category " << bits << "\n";
+      std::cout << "  physics: density " << shortest_text(p.density) << ", friction "
+                << shortest_text(p.friction) << ", restitution " << shortest_text(p.restitution)
+                << ", sensor " << (p.sensor ? "yes" : "no") << ", category " << bits << "\n";
     }
     for (std::size_t l = 0; l < asset.levels.size(); ++l) {
       const CookedLevel& level = asset.levels[l];
       std::size_t level_vertices = 0;
       for (const Ring& hull : level.hulls) level_vertices += hull.size();
-      std::cout << "  level " << l << ": tau " << shortest(level.tau) << ", "
+      std::cout << "  level " << l << ": tau " << shortest_text(level.tau) << ", "
                 << counted(level.hulls.size(), "hull", "hulls") << ", "
                 << counted(level_vertices, "vertex", "vertices") << "\n";
       for (std::size_t h = 0; h < level.hulls.size(); ++h) {
