@@ -90,5 +90,52 @@ TEST(CookRoundTrip, InspectJsonGivesTheCookedHullsWithinTheQuantizationBound) {
   }
 }
 
+// Every hull as a reader gets it keeps the weld: no two vertices closer than it, none nearer
+// than a tenth of it to its neighbours' line. The sweep of stop 54 found readers' hulls 0.0048
+// apart at --ppu 100 (weld 0.005) and 0.48 apart at --weld 0.5: cooked exactly a weld apart,
+// then rounded to the bundle's grid, finer than the weld. The cooked hulls now keep twice the
+// rounding more.
+TEST(CookRoundTrip, Sweep54_HullsAsReadBackKeepTheWeld) {
+  const fs::path dir = fs::path(HULLCOOK_BINARY_DIR) / "tests/formats/cook_roundtrip_weld";
+  fs::create_directories(dir);
+  const fs::path sprites = fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites";
+  std::string inputs;
+  for (const char* name :
+       {"teeworlds__mapres__grass_doodads.png", "pingus__worldobjs__teleporter.png",
+        "frozen-bubble__menu__fblogo-mask.png"})
+    inputs += " " + (sprites / name).string();
+  for (const auto& [options, weld] :
+       {std::pair<std::string, double>{" --ppu 100", 0.005}, {" --max-verts 4 --weld 0.5", 0.5}}) {
+    SCOPED_TRACE(options);
+    const fs::path bundle = dir / "out.hcb";
+    const auto result = test::run_hullcook("cook" + inputs + options + " -o " + bundle.string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const auto inspected = test::run_hullcook("inspect --json " + bundle.string() + " 2>/dev/null");
+    ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
+    std::size_t hulls = 0;
+    const json stored = json::parse(inspected.output);
+    for (const json& asset : stored["assets"]) {
+      for (const json& level : asset["levels"]) {
+        for (const json& points : level["hulls"]) {
+          const Polygon hull = polygon(points);
+          const std::size_t n = hull.size();
+          ++hulls;
+          for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = i + 1; j < n; ++j) {
+              EXPECT_GE(std::hypot(hull[i].x - hull[j].x, hull[i].y - hull[j].y), weld)
+                  << asset["name"] << " hull " << hulls;
+            }
+            const Point a = hull[(i + n - 1) % n], b = hull[i], c = hull[(i + 1) % n];
+            const double height = std::fabs((c.x - a.x) * (b.y - a.y) - (c.y - a.y) * (b.x - a.x)) /
+                                  std::hypot(c.x - a.x, c.y - a.y);
+            EXPECT_GE(height, 0.1 * weld) << asset["name"] << " hull " << hulls;
+          }
+        }
+      }
+    }
+    EXPECT_GT(hulls, 300u);
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

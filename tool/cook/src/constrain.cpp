@@ -742,7 +742,7 @@ class Constrainer {
   }
 
   bool is_small(const CookedPiece& piece) const {
-    return piece.hull.size() < 3 || width_of(piece.hull) < limits_.weld;
+    return piece.hull.size() < 3 || width_of(piece.hull) < limits_.weld_distance();
   }
 
   // A piece thinner than the weld that no hull within τ holds: the weld is too coarse for τ. Any
@@ -773,14 +773,24 @@ class Constrainer {
               << " holes could not be split into pieces that fit the engine limits";
       throw std::logic_error(message.str());
     }
-    // Its width decides (is_small): a weld below it makes the piece an ordinary one, which
-    // always fits.
+    // Its width decides (is_small): a weld whose distance is below it makes the piece an
+    // ordinary one, which always fits.
     const double width = width_of(slot.piece.hull);
-    message << " is " << width << " units wide, thinner than the weld distance " << limits_.weld
-            << ", and can be neither merged into a neighbour nor given an engine-ready hull "
+    message << " is " << width << " units wide, thinner than the weld distance " << limits_.weld;
+    if (limits_.rounding > 0) {
+      message << " (" << limits_.weld_distance() << " with the " << limits_.rounding
+              << " that the writers' rounding may take from it)";
+    }
+    message << ", and can be neither merged into a neighbour nor given an engine-ready hull "
                "within tau = "
-            << tau_ << " output units; lower --weld below " << width
-            << " (its width), or raise --tau or lower --ppu";
+            << tau_ << " output units; ";
+    if (width > limits_.rounding) {
+      message << "lower --weld below " << width - limits_.rounding << " (its width"
+              << (limits_.rounding > 0 ? " less the rounding" : "") << "), ";
+    } else {
+      message << "turn the weld off (--weld 0), ";
+    }
+    message << "or raise --tau or lower --ppu";
     throw InputError(message.str());
   }
 

@@ -182,13 +182,16 @@ std::string limits_defect(const Ring& hull, const EngineLimits& limits) {
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = i + 1; j < n; ++j) {
       const double apart = glm::length(hull[i] - hull[j]);
-      if (apart < limits.weld) {
+      if (apart < limits.weld_distance()) {
         return "its hull's vertices " + point(hull[i]) + " and " + point(hull[j]) + " are " +
-               number(apart) + " apart (weld " + number(limits.weld) + ")";
+               number(apart) + " apart (weld " + number(limits.weld) +
+               (limits.rounding > 0
+                    ? ", and " + number(limits.rounding) + " for the writers' rounding)"
+                    : ")");
       }
     }
   }
-  const double collinear = kCollinearFractionOfWeld * limits.weld;
+  const double collinear = limits.least_turn();
   for (std::size_t i = 0; i < n; ++i) {
     const double height = turn_height(hull, i);
     if (height < collinear) {

@@ -404,7 +404,29 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   }
   asset.tau = level_taus.front();
 
-  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), std::nullopt};
+  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), 0.0, std::nullopt};
+  {
+    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9): a
+    // float's spacing at the asset's farthest coordinate, twice; and, where the bundle's grid is
+    // finer than the weld, twice its error bound E (for the largest hull the asset may have: its
+    // outline's box grown by the coarsest τ). A grid as coarse as the weld keeps distinct
+    // vertices a weld apart by itself.
+    Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
+    for (const Region& region : regions) {
+      for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
+    }
+    if (low.x <= high.x && limits.weld > 0) {
+      const double grown = level_taus.back();
+      const double extent = std::max(high.x - low.x, high.y - low.y) + 2 * grown;
+      const double farthest =
+          std::max({std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)}) + grown;
+      const double bound =
+          format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit, extent);
+      const bool grid_finer_than_weld = std::sqrt(2.0) * bound < limits.weld;
+      limits.rounding =
+          2 * ((grid_finer_than_weld ? bound : 0.0) + format::float_spacing(farthest));
+    }
+  }
   if (asset.tile) {
     const Vec2 a = asset.transform.apply({0.0, 0.0});
     const Vec2 b = asset.transform.apply({double(input.width), double(input.height)});

@@ -119,7 +119,7 @@ std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& lim
   thread_local std::vector<char> wanted;
   wanted.assign(n, 0);
   auto want = [&](std::size_t edge) { wanted[edge % n] = 1; };
-  double collinear = kCollinearFractionOfWeld * limits.weld;
+  double collinear = limits.least_turn();
   for (std::size_t i = 0; i < n; ++i) {
     // A turn too small to measure (0 or -0 where the exact turn is a left one) breaks the limits
     // whatever the weld, so it is mended at weld 0 too.
@@ -148,13 +148,13 @@ std::vector<std::size_t> edges_to_mend(const Ring& hull, const EngineLimits& lim
     }
     if (finite) std::sort(along.begin(), along.end());
     // Not finite: every pair, in index order.
-    const double window =
-        finite ? 2 * limits.weld + 1e-12 * scale + 1e-140 : std::numeric_limits<double>::infinity();
+    const double window = finite ? 2 * limits.weld_distance() + 1e-12 * scale + 1e-140
+                                 : std::numeric_limits<double>::infinity();
     for (std::size_t p = 0; p < n; ++p) {
       const std::size_t i = along[p].second;
       for (std::size_t q = p + 1; q < n && !(along[q].first - along[p].first > window); ++q) {
         const std::size_t j = along[q].second;
-        if (glm::length(hull[i] - hull[j]) < limits.weld) {
+        if (glm::length(hull[i] - hull[j]) < limits.weld_distance()) {
           want(i + n - 1);
           want(i);
           want(j + n - 1);
@@ -346,7 +346,8 @@ std::optional<Ring> HullFitter::seal(Ring hull) const {
 }
 
 bool HullFitter::too_small(const Ring& hull) const {
-  return hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * limits_.weld * limits_.weld;
+  const double weld = limits_.weld_distance();
+  return hull.size() < 3 || std::abs(signed_area(hull)) < 0.5 * weld * weld;
 }
 
 std::optional<Ring> HullFitter::fit(Ring hull) {

@@ -72,7 +72,7 @@ bool MendQueue::start(const Ring& hull) {
   wanted_count_ = 0;
   // At least 1e-150: vertices closer than about 1e-161 square to a length of 0 (below any
   // weld, as edges_to_mend measures them) however many cells of a tinier weld apart.
-  cell_ = limits_.weld > 0 ? std::max(2 * limits_.weld, 1e-150) : 0.0;
+  cell_ = limits_.weld > 0 ? std::max(2 * limits_.weld_distance(), 1e-150) : 0.0;
   if (cell_ > 0) {
     // Cell indices must fit 64 bits, exactly enough that neighbouring cells differ by one.
     if (!std::isfinite(cell_)) return false;
@@ -88,7 +88,8 @@ bool MendQueue::start(const Ring& hull) {
     for (std::uint32_t id = 0; id < n; ++id) insert_in_grid(id);
     for (std::uint32_t id = 0; id < n; ++id) {
       for_each_near(vertex_[id].point, [&](std::uint32_t other) {
-        if (other != id && glm::length(vertex_[id].point - vertex_[other].point) < limits_.weld)
+        if (other != id &&
+            glm::length(vertex_[id].point - vertex_[other].point) < limits_.weld_distance())
           ++vertex_[id].close;
       });
     }
@@ -106,7 +107,7 @@ void MendQueue::update_turn(const Ring& hull, std::size_t i) {
   // A turn too small to measure (0 or -0 where the exact turn is a left one) breaks the limits
   // whatever the weld, as in edges_to_mend.
   const double height = turn_height(hull, i);
-  vertex_[ids_[i]].bad_turn = height < kCollinearFractionOfWeld * limits_.weld || !(height > 0);
+  vertex_[ids_[i]].bad_turn = height < limits_.least_turn() || !(height > 0);
 }
 
 void MendQueue::update_edge(const Ring& hull, std::size_t i) {
@@ -136,7 +137,8 @@ void MendQueue::remove_edge(std::size_t edge, const Ring& next) {
   touched.clear();
   auto part = [&](std::uint32_t id, int change) {
     for_each_near(vertex_[id].point, [&](std::uint32_t other) {
-      if (other == id || !(glm::length(vertex_[id].point - vertex_[other].point) < limits_.weld)) {
+      if (other == id ||
+          !(glm::length(vertex_[id].point - vertex_[other].point) < limits_.weld_distance())) {
         return;
       }
       vertex_[other].close = static_cast<std::uint32_t>(vertex_[other].close + change);

@@ -35,8 +35,10 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
   }
   double extent = 0;
   for (Vec2 p : local) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
-  double size = limits.weld > 0 ? limits.weld * kWeldMargin
+  double size = limits.weld > 0 ? limits.weld_distance() * kWeldMargin
                                 : std::max(1e-9 * extent, std::numeric_limits<double>::min());
+  const double turn =
+      limits.weld > 0 ? limits.least_turn() * kWeldMargin : kCollinearFractionOfWeld * size;
 
   std::vector<Ring> candidates;
   for (Vec2 u : directions) {
@@ -59,7 +61,7 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
     // Triangles on either side: a base twice the ring's length (at least the weld) and twice
     // its thickness high hold the ring; a tenth of the weld high keeps the turns strict.
     double half_base = std::max(u1 - u0, size);
-    double rise = std::max(2 * (v1 - v0), 1.5 * kCollinearFractionOfWeld * size);
+    double rise = std::max(2 * (v1 - v0), 1.5 * turn);
     double middle = 0.5 * (u0 + u1);
     candidates.push_back(
         {at(middle - half_base, v0), at(middle + half_base, v0), at(middle, v0 + rise)});

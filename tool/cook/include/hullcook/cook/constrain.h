@@ -13,9 +13,25 @@
 
 namespace hullcook {
 
+// A vertex is collinear with its neighbours (and removed) when it is closer than this fraction
+// of the weld distance to the line through them: engines computing hulls in float must see a
+// strict turn.
+inline constexpr double kCollinearFractionOfWeld = 0.1;
+
 struct EngineLimits {
   std::size_t max_verts = 8;  // per hull; 0 = unlimited
   double weld = 0.005;        // [output units] minimum distance between two hull vertices; 0: none
+  // [output units] what a writer's rounding may take from the distance between two hull vertices
+  // or from a vertex's height over its neighbours' line: twice the most it moves a vertex (the
+  // bundle's error bound E and a float's spacing there, formats/SPEC.md §9). With a weld, the
+  // cooked hulls keep that much more, so that what a reader gets still keeps the weld.
+  double rounding = 0.0;
+  // The least distance between two vertices of a cooked hull: the weld and the rounding (0
+  // without a weld).
+  double weld_distance() const { return weld > 0 ? weld + rounding : 0.0; }
+  // The least height of a cooked hull's vertex over its neighbours' line (with a weld; without,
+  // any strict turn).
+  double least_turn() const { return weld > 0 ? kCollinearFractionOfWeld * weld + rounding : 0.0; }
   // --tile: every hull point lies in this box [output units] (the cell), but for rounding
   // (kOutsideBoxFraction of its size): a hull grown past a tile's border is a bump at its seam.
   struct Box {
@@ -27,11 +43,6 @@ struct EngineLimits {
 
 // How far, as a fraction of the box's larger side, a hull point may lie outside keep_inside.
 inline constexpr double kOutsideBoxFraction = 1e-9;
-
-// A vertex is collinear with its neighbours (and removed) when it is closer than this fraction
-// of the weld distance to the line through them: engines computing hulls in float must see a
-// strict turn.
-inline constexpr double kCollinearFractionOfWeld = 0.1;
 
 // Splits a component that no hull within the limits can cover into smaller pieces, each with
 // its component, convex hull and concavity; tau is the tolerance to split at. Returns the
