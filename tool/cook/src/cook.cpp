@@ -406,11 +406,13 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
 
   EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), 0.0, std::nullopt};
   {
-    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9): a
-    // float's spacing at the asset's farthest coordinate, twice; and, where the bundle's grid is
-    // finer than the weld, twice its error bound E (for the largest hull the asset may have: its
-    // outline's box grown by the coarsest τ). A grid as coarse as the weld keeps distinct
-    // vertices a weld apart by itself.
+    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9): where
+    // the bundle's grid is finer than the weld, twice its error bound E (for the largest hull
+    // the asset may have: its outline's box grown by the coarsest τ); a grid as coarse as the
+    // weld keeps distinct vertices a weld apart by itself. And twice a float's spacing at the
+    // asset's farthest coordinate, where that is under a tenth of the weld: farther out, floats
+    // as coarse as the weld keep distinct vertices apart as the grid does, and a margin of their
+    // size refused thin pieces that a weld far smaller than the floats cannot tell apart.
     Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
     for (const Region& region : regions) {
       for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
@@ -422,9 +424,9 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
           std::max({std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)}) + grown;
       const double bound =
           format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit, extent);
-      const bool grid_finer_than_weld = std::sqrt(2.0) * bound < limits.weld;
-      limits.rounding =
-          2 * ((grid_finer_than_weld ? bound : 0.0) + format::float_spacing(farthest));
+      const double floats = 2 * format::float_spacing(farthest);
+      limits.rounding = (std::sqrt(2.0) * bound < limits.weld ? 2 * bound : 0.0) +
+                        (floats <= 0.1 * limits.weld ? floats : 0.0);
     }
   }
   if (asset.tile) {
