@@ -1,6 +1,7 @@
 #include "outline_distance.h"
 
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -295,7 +296,26 @@ void OutlineDistance::for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit vi
 
 bool OutlineDistance::contains(Vec2 p) const {
   if (edges_.empty() || p.y < origin_.y || p.y > origin_.y + rows_ * cell_) return false;
-  int row = row_of(p.y);
+  const int row = row_of(p.y);
+  // A row that many edges span (the spokes of a star cross every row they pass: a 10,000-vertex
+  // star's rows held thousands, and its cook took 24 s in this scan) is left for p's cell: the
+  // parity of the crossings from the cell's centre, whose side is known, to p.
+  if (row_edges_.size(static_cast<std::size_t>(row)) > kRowEdgesWorthACellsCentre &&
+      p.x >= origin_.x && p.x <= origin_.x + columns_ * cell_) {
+    const int column = column_of(p.x);
+    const std::size_t cell = static_cast<std::size_t>(row) * columns_ + column;
+    const Vec2 centre = origin_ + Vec2{column + 0.5, row + 0.5} * cell_;
+    if (centre_inside_.empty()) centre_inside_.assign(cell_edges_.bucket_count(), kUnknown);
+    signed char& known = centre_inside_[cell];
+    if (known == kUnknown) known = centre_side(cell, centre);
+    if (known != kOnTheOutline) {
+      bool inside = known == kInside;
+      for (const std::uint32_t* k = cell_edges_.begin(cell); k != cell_edges_.end(cell); ++k) {
+        if (crosses(centre, p, edges_[*k].a, edges_[*k].b)) inside = !inside;
+      }
+      return inside;
+    }
+  }
   bool inside = false;
   for (const std::uint32_t* k = row_edges_.begin(row); k != row_edges_.end(row); ++k) {
     const Edge& e = edges_[*k];
@@ -305,6 +325,33 @@ bool OutlineDistance::contains(Vec2 p) const {
     }
   }
   return inside;
+}
+
+// Whether the segment from centre to p crosses edge ab, counted so that the crossings' parity
+// is the change of side (exact orientations): ab's ends on either side of the line through
+// centre and p (an end on it counts as below: a path through a vertex crosses once or not at
+// all, as the outline does), and centre and p on either side of ab's line. centre is on no edge.
+bool OutlineDistance::crosses(Vec2 centre, Vec2 p, Vec2 a, Vec2 b) {
+  if ((orient2d(centre, p, a) > 0) == (orient2d(centre, p, b) > 0)) return false;
+  return (orient2d(a, b, centre) > 0) != (orient2d(a, b, p) > 0);
+}
+
+// Inside or outside for a cell's centre by exact orientations (a ray to the right, half-open in
+// y as the row scan is), or on the outline when an edge of the cell passes through it.
+signed char OutlineDistance::centre_side(std::size_t cell, Vec2 centre) const {
+  for (const std::uint32_t* k = cell_edges_.begin(cell); k != cell_edges_.end(cell); ++k) {
+    if (on_segment(edges_[*k].a, edges_[*k].b, centre)) return kOnTheOutline;
+  }
+  const int row = row_of(centre.y);
+  bool inside = false;
+  for (const std::uint32_t* k = row_edges_.begin(row); k != row_edges_.end(row); ++k) {
+    const Edge& e = edges_[*k];
+    if ((e.a.y > centre.y) == (e.b.y > centre.y)) continue;
+    // The crossing is right of the centre when the centre is left of the edge run upward.
+    const bool upward = e.b.y > e.a.y;
+    if ((upward ? orient2d(e.a, e.b, centre) : orient2d(e.b, e.a, centre)) > 0) inside = !inside;
+  }
+  return inside ? kInside : kOutside;
 }
 
 double OutlineDistance::distance(Vec2 p, double limit, EdgeSpan* nearest) const {

@@ -79,6 +79,11 @@ class OutlineDistance {
   bool cells_within(const Ring& region, const Ring& known, double tau, int& budget) const;
   // True when no boundary edge meets the square and its centre is inside the outline.
   bool square_inside(Vec2 centre, double half) const;
+  // contains() by a cell's centre: see there.
+  static constexpr std::size_t kRowEdgesWorthACellsCentre = 64;
+  static constexpr signed char kUnknown = -1, kOutside = 0, kInside = 1, kOnTheOutline = 2;
+  static bool crosses(Vec2 centre, Vec2 p, Vec2 a, Vec2 b);
+  signed char centre_side(std::size_t cell, Vec2 centre) const;
 
   std::vector<Edge> edges_;
   Vec2 origin_{0, 0};  // the grid's lower corner
@@ -86,7 +91,8 @@ class OutlineDistance {
   int columns_ = 0, rows_ = 0;
   // Edge indices by cell, and by row of cells (for the ray crossing test).
   Buckets<std::uint32_t, std::uint32_t> cell_edges_, row_edges_;
-  mutable std::vector<std::uint32_t> visited_;              // per edge: the query that last saw it
+  mutable std::vector<std::uint32_t> visited_;      // per edge: the query that last saw it
+  mutable std::vector<signed char> centre_inside_;  // per cell: its centre's side, once asked
   mutable std::vector<std::pair<double, double>> covered_;  // segment_within's intervals
   mutable std::uint32_t query_ = 0;
   mutable std::uint64_t distance_queries_ = 0;
