@@ -475,6 +475,11 @@ TEST_F(CookCli, Issue19FuzzHoleAHairFromTheOuterEdgeIsBadInput) {
                                "contract (hole 1 comes within 1.17708e-09 of the outer boundary"),
             std::string::npos)
       << result.output;
+  // The limit is named as one (the sweep of stop 54 read "a wall no thicker than 7.6e-10" as the
+  // wall's thickness, beside a distance larger than it).
+  EXPECT_NE(result.output.find(" thick there is thinner than the output's contract resolves)"),
+            std::string::npos)
+      << result.output;
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
   EXPECT_FALSE(fs::exists(json));
   expect_bad_input(input, "hole 1 comes within");

@@ -33,7 +33,8 @@ using detail::point;
 // edge's ends are there to reach, and the triangle they leave, of area |edge| t / 2 for a wall t
 // thick, is a sliver by the contract (issue 19's fuzzing: a hole vertex 1.2e-9 above a 0.76 long
 // edge, whose sliver width is 7.6e-10). At the contract's resolution the rings touch. Described
-// as "hole 1 comes within D of the outer boundary at (x, y), a wall no thicker than W".
+// as "hole 1 comes within D of the outer boundary at (x, y): a wall up to W thick there is
+// thinner than the output's contract resolves" (W, the limit, was read as the wall's thickness).
 // A ring that comes that near itself (a vertex near an edge it is not an end of, unless that is
 // only the length of the edge between them) is a spike or a neck no wider than that: issue 19's
 // fuzzing found a spike 6e7 long and 1.2 wide beside a longer one that set the slack to 0.83;
@@ -110,7 +111,8 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
           if (nearest.along == 1.0 && corner.index == (j + 1) % n) return std::nullopt;
           if (nearest.distance > limit) return std::nullopt;
           return ring_name(r) + " comes within " + number(nearest.distance) + " of itself at " +
-                 point(corner.point) + ", a spike or neck no wider than " + number(limit);
+                 point(corner.point) + ": a spike or neck up to " + number(limit) +
+                 " wide there is thinner than the output's contract resolves";
         }
         const double wall = point_segment_distance(corner.point, a, b);
         if (wall > limit) return std::nullopt;
@@ -118,7 +120,8 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
         const std::size_t hole = corner.ring == 0 ? r : corner.ring;
         const std::size_t other = corner.ring == 0 ? 0 : r;
         return ring_name(hole) + " comes within " + number(wall) + " of " + ring_name(other) +
-               " at " + point(corner.point) + ", a wall no thicker than " + number(limit);
+               " at " + point(corner.point) + ": a wall up to " + number(limit) +
+               " thick there is thinner than the output's contract resolves";
       };
       std::optional<std::string> defect;
       if (!tree) {

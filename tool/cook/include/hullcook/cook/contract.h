@@ -45,8 +45,9 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
 // (area A over a length of L)" when a region of outline is itself a sliver as the contract judges
 // pieces checked against outline: no decomposition of it could keep the contract, so it is bad
 // input, not an internal error (issue 19's fuzzing: a 1.6 wide spike 1e9 long); or "(hole H
-// comes within D of the outer boundary at (x, y), a wall no thicker than W)" / "(the outer
-// boundary comes within D of itself at (x, y), a spike or neck no wider than W)" when two rings,
+// comes within D of the outer boundary at (x, y): a wall up to W thick there is thinner than the
+// output's contract resolves)" / "(the outer boundary comes within D of itself at (x, y): a spike
+// or neck up to W wide there ...)" when two rings,
 // or one ring's two sides, come within twice the sliver width of an edge: at the contract's
 // resolution they touch. Regions are numbered from first_region_number. threads: how many may
 // check regions at once; the error thrown (the first region's) is the same for any count.
