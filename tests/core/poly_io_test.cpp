@@ -183,6 +183,15 @@ TEST(PolyIo, Issue22_EachWrongTokenIsNamedByLineChainAndPlace) {
   EXPECT_THAT(
       error_of("short.poly", "1\n4 out\n0 0\n10 0\n10 10\n0 10\n1 2 3\n"),
       HasSubstr("short.poly:8: file ends where index 4 of the order of chain 1 was expected"));
+  // A number missing shifts every later one, and the error surfaces lines later (stop 54's
+  // sweep): it points back at the line that held a vertex's x without its y.
+  EXPECT_THAT(error_of("missing.poly", "1\n4 out\n0 0\n10\n10 10\n0 10\n1 2 3 4\n"),
+              HasSubstr("missing.poly:8: file ends where index 4 of the order of chain 1 was "
+                        "expected (line 4 holds a vertex's x without its y: is a number missing "
+                        "there?)"));
+  // Numbers split across lines on purpose read as before, and are not blamed.
+  EXPECT_EQ(parse_poly("1\n4 out\n0\n0\n10\n0\n10 10\n0 10\n1 2 3 4\n", "split.poly").size(), 1u);
+  EXPECT_THAT(error_of("one.poly", "one\n" + square), Not(HasSubstr("without its y")));
 }
 
 // The crossing check on zigzags of long diagonal teeth, where each edge's box covers a large part

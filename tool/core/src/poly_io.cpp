@@ -35,7 +35,20 @@ class Tokenizer {
   }
 
   [[noreturn]] void fail(const std::string& problem) const {
-    throw InputError(std::string(source_) + ":" + std::to_string(token_line_) + ": " + problem);
+    std::string message = std::string(source_) + ":" + std::to_string(token_line_) + ": " + problem;
+    // The format reads numbers whatever the lines: one missing shifts every later one, and the
+    // error surfaces far from it.
+    if (split_point_line_ != 0 && split_point_line_ < token_line_) {
+      message += " (line " + std::to_string(split_point_line_) +
+                 " holds a vertex's x without its y: is a number missing there?)";
+    }
+    throw InputError(message);
+  }
+
+  int token_line() const { return token_line_; }
+  // Where a vertex's x and y first lay on different lines (0: none so far).
+  void note_split_point(int line) {
+    if (split_point_line_ == 0) split_point_line_ = line;
   }
 
   // what() names the value expected, for the error message only: built when a token is wrong,
@@ -94,6 +107,7 @@ class Tokenizer {
   std::size_t position_ = 0;
   int line_ = 1;
   int token_line_ = 1;
+  int split_point_line_ = 0;
 };
 
 }  // namespace
@@ -127,8 +141,10 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
     for (long long i = 0; i < count; ++i) {
       const double x =
           tokens.real([&] { return "x of vertex " + std::to_string(i + 1) + " of " + chain_name; });
+      const int x_line = tokens.token_line();
       const double y =
           tokens.real([&] { return "y of vertex " + std::to_string(i + 1) + " of " + chain_name; });
+      if (tokens.token_line() != x_line) tokens.note_split_point(x_line);
       points.push_back({x, y});
     }
     Ring ring;
