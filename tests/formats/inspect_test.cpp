@@ -100,6 +100,9 @@ TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
   // of a file with no header to say anything (a helper's sweep, stop 54).
   const fs::path empty = write("empty.hcb", "");
   const fs::path ten_bytes = write("ten_bytes.hcb", bytes.substr(0, 10));
+  // hullcook's other outputs are named as what they are (the sweep found "bad magic" alone).
+  const fs::path debug_json = write("debug.json", "{\"hullcook\": 1,\n \"assets\": []}\n");
+  const fs::path fragment = write("sprite.hcf", std::string("HCF\x1a", 4) + std::string(60, '\0'));
   const fs::path text =
       write("text.hcb", "hello, this is not a bundle at all, but long enough for a header!");
   const struct {
@@ -108,6 +111,8 @@ TEST(Inspect, BadFilesPrintTheirStatusAndExitWith2) {
   } cases[] = {{checksum, "bad checksum"},
                {truncated, "truncated"},
                {empty, "truncated (shorter than the 64-byte header"},
+               {debug_json, "; it is JSON, as hullcook's debug JSON is"},
+               {fragment, "it is a hullcook fragment (.hcf): `hullcook link` it"},
                {ten_bytes, "truncated (shorter than the 64-byte header"},
                {text, "not a hullcook bundle"},
                {work_dir() / "missing.hcb", "could not be opened"}};

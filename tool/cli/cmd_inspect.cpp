@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -122,13 +123,31 @@ std::vector<CookedAsset> cooked_assets(const rt::Bundle& bundle) {
   return assets;
 }
 
+// For a file that is no bundle: what hullcook's other outputs are, when it is one of them.
+std::string what_it_is(const rt::MappedFile& file) {
+  const auto* bytes = static_cast<const unsigned char*>(file.data());
+  std::size_t first = 0;
+  while (first < file.size() && std::isspace(bytes[first])) ++first;
+  if (first < file.size() && bytes[first] == '{') {
+    return "; it is JSON, as hullcook's debug JSON is (-o X.json, --json): readable as it is";
+  }
+  if (file.size() >= 4 && std::memcmp(bytes, "HCF\x1a", 4) == 0) {
+    return "; it is a hullcook fragment (.hcf): `hullcook link` it into a bundle to inspect it";
+  }
+  return "";
+}
+
 int inspect_bundle(const std::filesystem::path& path, bool json_output) {
   rt::MappedFile file;
   rt::Status status = file.open(path.c_str());
   rt::Bundle bundle;
   if (status == rt::Status::ok) status = bundle.open(file.data(), file.size());
   if (status != rt::Status::ok) {
-    std::cerr << "hullcook: error: " << path.string() << ": " << rt::status_string(status) << "\n";
+    std::cerr << "hullcook: error: " << path.string() << ": " << rt::status_string(status)
+              << (status == rt::Status::bad_magic || status == rt::Status::truncated
+                      ? what_it_is(file)
+                      : "")
+              << "\n";
     return 2;
   }
   if (json_output) {
