@@ -166,7 +166,8 @@ TEST_F(GridCli, GridsThatCutNothingAreRefused) {
                             " --grid 8 --margin 1 --spacing 2" + out);
   ASSERT_EQ(among.exit_code, 0) << among.output;
   EXPECT_NE(among.output.find("hullcook: warning: " + (directory / "art/tiles/empty.png").string() +
-                              ": every cell of the grid is empty (--grid, --alpha): the sheet "
+                              ": every cell of the grid is empty or holds only specks (--grid, "
+                              "--alpha, --min-blob-area): the sheet "
                               "gives no asset"),
             std::string::npos)
       << among.output;
@@ -235,6 +236,11 @@ TEST_F(GridCli, OpaquePixelsBeyondTheLastWholeCellAreToldWithTheirCount) {
   // 4 x 4 counted once.
   std::ofstream(partial, std::ios::binary)
       << sheet({{4, 4, 28, 28}, {97, 10, 100, 20}, {10, 64, 20, 80}, {96, 76, 100, 80}});
+  // The same with a frame in a 1 px margin: the left column, which no strip counts (a review
+  // found the bottom strip counted it from x = 0).
+  const fs::path framed = directory / "framed.png";
+  std::ofstream(framed, std::ios::binary) << sheet(
+      {{4, 4, 28, 28}, {97, 10, 100, 20}, {10, 64, 20, 80}, {96, 76, 100, 80}, {0, 0, 1, 80}});
   std::ofstream(beyond_only, std::ios::binary) << sheet({{97, 10, 100, 20}});
   const std::string out = " -o " + (directory / "out.hcb").string();
   auto warned = run_hullcook("cook " + partial.string() + " --grid 32 -q" + out);
@@ -248,9 +254,9 @@ TEST_F(GridCli, OpaquePixelsBeyondTheLastWholeCellAreToldWithTheirCount) {
   // With a margin the strips stop short of the far margin: 31 px cells at margin 1 and spacing 1
   // fit the same columns and rows, and the far margin's pixels (x = 99, y = 79) are no strip's.
   auto margin =
-      run_hullcook("cook " + partial.string() + " --grid 31 --margin 1 --spacing 1 -q" + out);
+      run_hullcook("cook " + framed.string() + " --grid 31 --margin 1 --spacing 1 -q" + out);
   ASSERT_EQ(margin.exit_code, 0) << margin.output;
-  // Right strip x 97..98 above y 65 (2 x 10), bottom strip y 65..78 across x 0..98 (10 x 14,
+  // Right strip x 97..98 above y 65 (2 x 10), bottom strip y 65..78 across x 1..98 (10 x 14,
   // and 3 x 3 of the corner square): 20 + 140 + 9.
   EXPECT_NE(margin.output.find(": 169 opaque pixels lie beyond the last whole cell (x >= 97 or "
                                "y >= 65 of a 100x80 image), where --grid 31x31 --margin 1 "
@@ -262,7 +268,8 @@ TEST_F(GridCli, OpaquePixelsBeyondTheLastWholeCellAreToldWithTheirCount) {
   auto refused = run_hullcook("cook " + beyond_only.string() + " --grid 32" + out);
   EXPECT_EQ(refused.exit_code, static_cast<int>(ExitCode::bad_input)) << refused.output;
   EXPECT_NE(refused.output.find(beyond_only.string() +
-                                ": every cell of the grid is empty (--grid, --alpha); 30 opaque "
+                                ": every cell of the grid is empty or holds only specks (--grid, "
+                                "--alpha, --min-blob-area); 30 opaque "
                                 "pixels lie beyond the last whole cell (x >= 96 or y >= 64"),
             std::string::npos)
       << refused.output;

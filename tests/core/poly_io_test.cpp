@@ -189,8 +189,10 @@ TEST(PolyIo, Issue22_EachWrongTokenIsNamedByLineChainAndPlace) {
               HasSubstr("missing.poly:8: file ends where index 4 of the order of chain 1 was "
                         "expected (line 4 holds a vertex's x without its y: is a number missing "
                         "there?)"));
-  // Numbers split across lines on purpose read as before, and are not blamed.
+  // Numbers split across lines on purpose read as before, and are not blamed for a later error.
   EXPECT_EQ(parse_poly("1\n4 out\n0\n0\n10\n0\n10 10\n0 10\n1 2 3 4\n", "split.poly").size(), 1u);
+  EXPECT_THAT(error_of("split.poly", "1\n4 out\n0\n0\n10\n0\n10\n10\n0\n10\n1 2 3 x\n"),
+              AllOf(HasSubstr("found 'x'"), Not(HasSubstr("without its y"))));
   EXPECT_THAT(error_of("one.poly", "one\n" + square), Not(HasSubstr("without its y")));
 }
 

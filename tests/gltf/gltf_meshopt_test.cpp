@@ -203,8 +203,9 @@ TEST(GltfMeshopt, Sweep54_AHullThinnerThanTheStepIsWrittenOnAFinerGridOrRefused)
     const std::string message = error.what();
     EXPECT_NE(message.find("asset wide: hull 1 of level 0, at (0, 0), 0.0002 output units "
                            "thick, would reach a reader as a line or a point on the 16-bit grid "
-                           "of --meshopt: the asset spans 60002 units, so no step finer than "
-                           "0.915614 holds it; write it without --meshopt"),
+                           "of --meshopt: the asset spans 60002 units, so 16 bits hold no step "
+                           "finer than 0.915614, and none of the halved steps down to it keeps "
+                           "the hull; write it without --meshopt"),
               std::string::npos)
         << message;
   }

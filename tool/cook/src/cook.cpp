@@ -406,27 +406,32 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
 
   EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), 0.0, std::nullopt};
   {
-    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9): where
-    // the bundle's grid is finer than the weld, twice its error bound E (for the largest hull
-    // the asset may have: its outline's box grown by the coarsest τ); a grid as coarse as the
-    // weld keeps distinct vertices a weld apart by itself. And twice a float's spacing at the
-    // asset's farthest coordinate, where that is under a tenth of the weld: farther out, floats
-    // as coarse as the weld keep distinct vertices apart as the grid does, and a margin of their
-    // size refused thin pieces that a weld far smaller than the floats cannot tell apart.
-    Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
+    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9).
+    // - Where the bundle's grid is finer than the weld (its step at the least error bound the
+    //   writer may choose, 1 % of τ or 1/64 px), twice its error bound E, for the largest hull the
+    //   asset may have (its largest region's box grown by the coarsest τ: the writer's E is the
+    //   largest hull's); a grid as coarse as the weld keeps distinct vertices a weld apart.
+    // - Where floats at the asset's farthest coordinate are finer than the weld, twice their
+    //   spacing; floats as coarse as the weld keep distinct vertices apart as the grid does (a
+    //   margin of their size refused thin stress polygons 1e5 from the origin).
+    double largest_extent = 0.0, farthest = 0.0;
     for (const Region& region : regions) {
+      Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
       for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
+      if (!(low.x <= high.x)) continue;
+      largest_extent = std::max({largest_extent, high.x - low.x, high.y - low.y});
+      farthest = std::max(
+          {farthest, std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)});
     }
-    if (low.x <= high.x && limits.weld > 0) {
+    if (limits.weld > 0 && !regions.empty()) {
       const double grown = level_taus.back();
-      const double extent = std::max(high.x - low.x, high.y - low.y) + 2 * grown;
-      const double farthest =
-          std::max({std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)}) + grown;
-      const double bound =
-          format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit, extent);
-      const double floats = 2 * format::float_spacing(farthest);
-      limits.rounding = (std::sqrt(2.0) * bound < limits.weld ? 2 * bound : 0.0) +
-                        (floats <= 0.1 * limits.weld ? floats : 0.0);
+      const double least_bound =
+          format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit);
+      const double bound = format::quantization_error_bound(
+          level_taus.front(), asset.pixels_per_unit, largest_extent + 2 * grown);
+      const double spacing = format::float_spacing(farthest + grown);
+      limits.rounding = (std::sqrt(2.0) * least_bound < limits.weld ? 2 * bound : 0.0) +
+                        (spacing < limits.weld ? 2 * spacing : 0.0);
     }
   }
   if (asset.tile) {
@@ -541,7 +546,9 @@ void drop_empty_cells(const std::vector<InputFile>& files, const Settings& setti
         result.warnings.push_back(path + ": " + beyond + ": they are in no asset");
       continue;
     }
-    const std::string problem = path + ": every cell of the grid is empty (--grid, --alpha)" +
+    const std::string problem = path +
+                                ": every cell of the grid is empty or holds only specks (--grid, "
+                                "--alpha, --min-blob-area)" +
                                 (beyond.empty() ? "" : "; " + beyond);
     if (kept.empty()) throw InputError(problem);
     result.warnings.push_back(problem + ": the sheet gives no asset");

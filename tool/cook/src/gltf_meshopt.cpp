@@ -64,9 +64,11 @@ Quantization Quantization::of(const CookedAsset& asset) {
         detail::number(convex_thickness(*flat)) +
         " output units thick, would reach a reader as a line or a point on the 16-bit grid of "
         "--meshopt: the asset spans " +
-        detail::number(extent) + " units, so no step finer than " + detail::number(least_step) +
-        " holds it; write it without --meshopt, whose 32-bit floats hold it, or cook it with a "
-        "larger tau, which leaves fewer thin pieces");
+        detail::number(extent) + " units, so 16 bits hold no step finer than " +
+        detail::number(least_step) +
+        ", and none of the halved steps down to it keeps the hull; write it without --meshopt, "
+        "whose 32-bit floats hold it, or cook it with a larger tau, which leaves fewer thin "
+        "pieces");
   }
 }
 

@@ -45,10 +45,12 @@ UncoveredPixels uncovered_pixels(const AlphaImage& image, const Grid& grid, int 
   }
   const int to_x = std::max(uncovered.from_x, image.width - grid.margin);
   const int to_y = std::max(uncovered.from_y, image.height - grid.margin);
-  for (int y = 0; y < to_y; ++y) {
+  // Inside the margin on every side: a sheet's frame or guides there belong to no cell either.
+  const int margin = std::min({grid.margin, image.width, image.height});
+  for (int y = margin; y < to_y; ++y) {
     const std::uint8_t* row = image.alpha.data() + static_cast<std::size_t>(y) * image.width;
     // A row of the bottom strip counts across the width; the others only in the right strip.
-    for (int x = y >= uncovered.from_y ? 0 : uncovered.from_x; x < to_x; ++x) {
+    for (int x = y >= uncovered.from_y ? margin : uncovered.from_x; x < to_x; ++x) {
       if (row[x] >= alpha) ++uncovered.opaque;
     }
   }

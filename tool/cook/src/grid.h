@@ -21,9 +21,9 @@ struct GridCell {
 std::vector<GridCell> grid_cells(int width, int height, const Grid& grid);
 
 // Where the whole cells stop short of the image: the opaque pixels (alpha at least the tracer's
-// threshold) of the strips where a next column or row of cells would start, before the image's
-// far margin. A sheet sized for other cells, or one cell too narrow, loses those pixels silently
-// otherwise.
+// threshold) of the strips where a next column or row of cells would start, inside the image's
+// margin on every side. A sheet sized for other cells, or one cell too narrow, loses those pixels
+// silently otherwise.
 struct UncoveredPixels {
   std::size_t opaque = 0;
   int from_x = 0, from_y = 0;  // [px] the strips: x >= from_x, or y >= from_y (the image's size:

@@ -46,9 +46,14 @@ class Tokenizer {
   }
 
   int token_line() const { return token_line_; }
-  // Where a vertex's x and y first lay on different lines (0: none so far).
-  void note_split_point(int line) {
-    if (split_point_line_ == 0) split_point_line_ = line;
+  // A vertex read: where its x lay, and whether its y lay on another line. The first split one
+  // after a whole one is noted (a file that splits every vertex does so on purpose).
+  void note_point(int x_line, bool split) {
+    if (!split) {
+      whole_point_seen_ = true;
+    } else if (whole_point_seen_ && split_point_line_ == 0) {
+      split_point_line_ = x_line;
+    }
   }
 
   // what() names the value expected, for the error message only: built when a token is wrong,
@@ -108,6 +113,7 @@ class Tokenizer {
   int line_ = 1;
   int token_line_ = 1;
   int split_point_line_ = 0;
+  bool whole_point_seen_ = false;
 };
 
 }  // namespace
@@ -144,7 +150,7 @@ std::vector<Region> parse_poly(std::string_view text, std::string_view source) {
       const int x_line = tokens.token_line();
       const double y =
           tokens.real([&] { return "y of vertex " + std::to_string(i + 1) + " of " + chain_name; });
-      if (tokens.token_line() != x_line) tokens.note_split_point(x_line);
+      tokens.note_point(x_line, tokens.token_line() != x_line);
       points.push_back({x, y});
     }
     Ring ring;
