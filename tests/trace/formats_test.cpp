@@ -203,6 +203,21 @@ TEST(TraceFormats, BadImagesGiveAnInputErrorNamingTheFileAndTheProblem) {
                      ", inside the IEND chunk at byte " + std::to_string(good.size() - 12) +
                      ", the end of the image)");
 
+  // A palette's tRNS longer than the palette is invalid, and libpng sets it aside: the image was
+  // refused as "no alpha channel" (stop 54's sweep), which its author would not recognise.
+  const std::string palette("\x00\x00\x00\xff\xff\xff", 6);  // 2 colours
+  write_bytes(dir / "long_trns.png",
+              test::encode_png(2, 2, 8, 3, {std::string("\x00\x01", 2), std::string("\x01\x00", 2)},
+                               palette, std::string("\x00\xff\x80", 3)));
+  expect_refused(dir / "long_trns.png",
+                 "its tRNS chunk (the transparency of a palette, grey or "
+                 "RGB image) is invalid and was ignored");
+  // With a valid one (as long as the palette) the same image traces.
+  write_bytes(dir / "valid_trns.png",
+              test::encode_png(2, 2, 8, 3, {std::string("\x00\x01", 2), std::string("\x01\x00", 2)},
+                               palette, std::string("\x00\xff", 2)));
+  EXPECT_NO_THROW(load_alpha(dir / "valid_trns.png", TraceSettings{}));
+
   write_bytes(dir / "empty.png", test::encode_png(0, 0, 8, 6, {}));
   expect_refused(dir / "empty.png", "empty image (0x0");
 

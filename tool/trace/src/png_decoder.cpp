@@ -17,7 +17,9 @@ namespace {
 
 // libpng prints its own errors to stderr, so the chunk structure and checksums are verified here
 // first, for a clear message; libpng then skips its own checksums.
-void check_png_chunks(const std::string& bytes, const std::string& name) {
+// Returns whether the file has a tRNS chunk.
+bool check_png_chunks(const std::string& bytes, const std::string& name) {
+  bool transparency = false;
   std::size_t at = 8;
   while (true) {
     if (at + 12 > bytes.size()) {
@@ -42,7 +44,8 @@ void check_png_chunks(const std::string& bytes, const std::string& name) {
       fail(name, "corrupt PNG (bad checksum in the " + type + " chunk at byte " +
                      std::to_string(at) + ")");
     }
-    if (type == "IEND") return;
+    transparency = transparency || type == "tRNS";
+    if (type == "IEND") return transparency;
     at += 12 + length;
   }
 }
@@ -145,7 +148,7 @@ void alpha_of_raw_row(const png_byte* row, int width, int colour_type, int bit_d
 }  // namespace
 
 void decode_png(const std::string& bytes, PixelSink& sink) {
-  check_png_chunks(bytes, sink.name());
+  const bool has_transparency_chunk = check_png_chunks(bytes, sink.name());
   Reader reader(bytes, sink.name());
   png_structp png = reader.png();
   png_infop info = reader.info();
@@ -160,6 +163,16 @@ void decode_png(const std::string& bytes, PixelSink& sink) {
                  nullptr);
     png_get_tRNS(png, info, &transparent_alpha, &transparent_count, &transparent_colour);
   });
+  // A tRNS chunk that libpng set aside (a palette's with more entries than colours, one before
+  // PLTE): the image would be refused as having no alpha channel, which its author would not
+  // recognise.
+  if (has_transparency_chunk && transparent_count == 0 && sink.alpha_only() &&
+      (colour_type & PNG_COLOR_MASK_ALPHA) == 0) {
+    fail(sink.name(),
+         "its tRNS chunk (the transparency of a palette, grey or RGB image) is invalid and was "
+         "ignored: for a palette, more entries than it has colours, or a tRNS before PLTE; "
+         "without it the image has no alpha channel");
+  }
   // OpenCV's channels: RGB and palette 3, or 4 with tRNS; with an alpha sample 4; grey 1. Grey
   // with tRNS is 4 here (OpenCV reads it as 1 channel, as if opaque, which refused such sprites
   // as having no alpha channel), expanded as RGB with tRNS is.
