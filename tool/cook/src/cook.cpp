@@ -285,6 +285,37 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
 }
 
+// What the writers' rounding may take from a distance between two hull vertices or from a turn's
+// height (EngineLimits::rounding, formats/SPEC.md §9) [output units], for a weld [output units]
+// (0: none), the regions in output units and the levels' τ, finest first.
+// - Where the bundle's grid is finer than the weld (its step at the least error bound the writer
+//   may choose, 1 % of τ or 1/64 px), twice its error bound E, for the largest hull the asset may
+//   have (its largest region's box grown by the coarsest τ: the writer's E is the largest hull's);
+//   a grid as coarse as the weld keeps distinct vertices a weld apart.
+// - Where floats at the asset's farthest coordinate are finer than the weld, twice their spacing;
+//   floats as coarse as the weld keep distinct vertices apart as the grid does (a margin of their
+//   size refused thin stress polygons 1e5 from the origin).
+double writers_rounding(const std::vector<Region>& regions, const std::vector<double>& level_taus,
+                        double pixels_per_unit, double weld) {
+  if (!(weld > 0) || regions.empty()) return 0.0;
+  double largest_extent = 0.0, farthest = 0.0;
+  for (const Region& region : regions) {
+    Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
+    for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
+    if (!(low.x <= high.x)) continue;
+    largest_extent = std::max({largest_extent, high.x - low.x, high.y - low.y});
+    farthest =
+        std::max({farthest, std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)});
+  }
+  const double grown = level_taus.back();
+  const double least_bound = format::quantization_error_bound(level_taus.front(), pixels_per_unit);
+  const double bound = format::quantization_error_bound(level_taus.front(), pixels_per_unit,
+                                                        largest_extent + 2 * grown);
+  const double spacing = format::float_spacing(farthest + grown);
+  return (std::sqrt(2.0) * least_bound < weld ? 2 * bound : 0.0) +
+         (spacing < weld ? 2 * spacing : 0.0);
+}
+
 // threads: how many may work on this one asset (its regions), when there are fewer
 // assets than threads.
 CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings& asset_settings,
@@ -405,35 +436,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   asset.tau = level_taus.front();
 
   EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), 0.0, std::nullopt};
-  {
-    // What the writers' rounding may take from a distance or a turn (formats/SPEC.md §9).
-    // - Where the bundle's grid is finer than the weld (its step at the least error bound the
-    //   writer may choose, 1 % of τ or 1/64 px), twice its error bound E, for the largest hull the
-    //   asset may have (its largest region's box grown by the coarsest τ: the writer's E is the
-    //   largest hull's); a grid as coarse as the weld keeps distinct vertices a weld apart.
-    // - Where floats at the asset's farthest coordinate are finer than the weld, twice their
-    //   spacing; floats as coarse as the weld keep distinct vertices apart as the grid does (a
-    //   margin of their size refused thin stress polygons 1e5 from the origin).
-    double largest_extent = 0.0, farthest = 0.0;
-    for (const Region& region : regions) {
-      Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
-      for (const Vec2& p : region.outer) low = glm::min(low, p), high = glm::max(high, p);
-      if (!(low.x <= high.x)) continue;
-      largest_extent = std::max({largest_extent, high.x - low.x, high.y - low.y});
-      farthest = std::max(
-          {farthest, std::abs(low.x), std::abs(low.y), std::abs(high.x), std::abs(high.y)});
-    }
-    if (limits.weld > 0 && !regions.empty()) {
-      const double grown = level_taus.back();
-      const double least_bound =
-          format::quantization_error_bound(level_taus.front(), asset.pixels_per_unit);
-      const double bound = format::quantization_error_bound(
-          level_taus.front(), asset.pixels_per_unit, largest_extent + 2 * grown);
-      const double spacing = format::float_spacing(farthest + grown);
-      limits.rounding = (std::sqrt(2.0) * least_bound < limits.weld ? 2 * bound : 0.0) +
-                        (spacing < limits.weld ? 2 * spacing : 0.0);
-    }
-  }
+  limits.rounding = writers_rounding(regions, level_taus, asset.pixels_per_unit, limits.weld);
   if (asset.tile) {
     const Vec2 a = asset.transform.apply({0.0, 0.0});
     const Vec2 b = asset.transform.apply({double(input.width), double(input.height)});
