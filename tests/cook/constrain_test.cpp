@@ -9,6 +9,7 @@
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/core/predicates.h"
 
 #include <gtest/gtest.h>
 
@@ -875,6 +876,62 @@ TEST(OutlineDistance, SegmentAlongNearlyCollinearEdgesIsWithinThroughTheirShared
   // Inside is within; 0.12 out of the piece is not.
   EXPECT_TRUE(outline.segment_within({0.82, 0.12}, {0.58, 0.45}, 1e-12));
   EXPECT_FALSE(outline.segment_within({0.82, 0.12}, {0.82, 0.0}, 1e-3));
+}
+
+// contains() in rows of many edges goes by the parity of crossings from its cell's centre (stop
+// 54: a 10,000-vertex star's rows held thousands of spokes): it must answer as a ray's parity
+// does, by exact orientations, for every point not on the outline. A star whose rows hold
+// hundreds of edges, with a hole, and points on a fine lattice that meets vertices' heights and
+// the cells' centres exactly.
+TEST(OutlineDistance, Issue54_ContainsInRowsOfManyEdgesAnswersAsARayParity) {
+  Ring star;
+  const int spokes = 300;
+  for (int k = 0; k < 2 * spokes; ++k) {
+    const double angle = M_PI * k / spokes, radius = k % 2 ? 4.0 : 100.0;
+    // Coordinates on a 1/64 grid: lattice points meet them exactly.
+    star.push_back({std::round(64 * radius * std::cos(angle)) / 64,
+                    std::round(64 * radius * std::sin(angle)) / 64});
+  }
+  const Ring hole{{-1, -1}, {-1, 1}, {1, 1}, {1, -1}};
+  const Region whole{star, {hole}};
+  const OutlineDistance outline({&whole});
+  std::vector<std::pair<Vec2, Vec2>> edges;
+  for (const Ring* ring : std::initializer_list<const Ring*>{&star, &hole}) {
+    for (std::size_t i = 0; i < ring->size(); ++i) {
+      edges.push_back({(*ring)[i], (*ring)[(i + 1) % ring->size()]});
+    }
+  }
+  auto on_outline = [&](Vec2 p) {
+    for (const auto& [a, b] : edges) {
+      if (orient2d(a, b, p) == 0 && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x) &&
+          p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y)) {
+        return true;
+      }
+    }
+    return false;
+  };
+  auto ray_parity = [&](Vec2 p) {
+    bool inside = false;
+    for (const auto& [a, b] : edges) {
+      if ((a.y > p.y) == (b.y > p.y)) continue;
+      const bool upward = b.y > a.y;
+      if ((upward ? orient2d(a, b, p) : orient2d(b, a, p)) > 0) inside = !inside;
+    }
+    return inside;
+  };
+  std::mt19937_64 random(54);
+  std::uniform_int_distribution<int> lattice(-105 * 32, 105 * 32);
+  int checked = 0, inside = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 p{lattice(random) / 32.0, lattice(random) / 32.0};
+    if (on_outline(p)) continue;
+    ++checked;
+    const bool expected = ray_parity(p);
+    inside += expected;
+    ASSERT_EQ(outline.contains(p), expected) << "(" << p.x << ", " << p.y << ")";
+  }
+  EXPECT_GT(checked, 19000);
+  EXPECT_GT(inside, 300);
 }
 
 }  // namespace
