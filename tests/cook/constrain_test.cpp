@@ -347,6 +347,83 @@ TEST(Issue16, PieceTooSmallForTheWeldBelowTauIsAnInputErrorNamingTheAsset) {
   EXPECT_NEAR(area_of(welded), 0.000002, 1e-12);
 }
 
+// Stop 55: with several pieces too thin for the weld, the advice names the thinnest, so that one
+// round of it is enough (it named the first, and the next refused in turn: 2-3 rounds).
+TEST(Issue16, WeldAdviceNamesTheThinnestOfThePiecesItRefuses) {
+  auto triangle = [](Vec2 at, double side) {
+    return Ring{at, at + Vec2{side, 0}, at + Vec2{0, side}};
+  };
+  const std::vector<Ring> rings{triangle({0, 0}, 0.002), triangle({10, 0}, 0.001),
+                                triangle({0, 10}, 0.0015)};
+  auto pieces_of = [&] {
+    std::vector<CookedPiece> pieces;
+    for (std::size_t i = 0; i < rings.size(); ++i) {
+      pieces.push_back(convex_piece(rings[i]));
+      pieces.back().region = static_cast<std::uint32_t>(i);
+    }
+    return pieces;
+  };
+  try {
+    apply_engine_limits(pieces_of(), 0.0001, EngineLimits{8, 0.005}, no_split, "three.png");
+    ADD_FAILURE() << "pieces no hull within tau can hold were accepted";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("near (10.0005, 0.0005)"), std::string::npos) << what;
+    EXPECT_NE(what.find("is 0.000707107 units wide"), std::string::npos) << what;
+    EXPECT_NE(what.find("neither can 2 other pieces, none of them thinner"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("lower --weld below 0.000707107 (its width)"), std::string::npos) << what;
+  }
+  // One round of the advice takes them all.
+  const EngineLimits advised{8, 0.0007};
+  const std::vector<CookedPiece> welded =
+      apply_engine_limits(pieces_of(), 0.0001, advised, no_split, "three.png");
+  expect_within(welded, 0.0001, advised);
+  EXPECT_EQ(welded.size(), 3u);
+}
+
+// Stop 55: a piece thinner than the writers' rounding margin was told to turn the weld off,
+// where a weld at which the rounding keeps no margin takes it (101 of 321 Godot demo images at
+// --weld 0.5 --tau 0.02; all fit after one or two rounds of the advice).
+TEST(Issue16, WeldAdviceGoesBelowTheMarginFreeWeldRatherThanOff) {
+  const Ring tiny{{0, 0}, {0.002, 0}, {0, 0.002}};  // 0.00141421 wide
+  EngineLimits limits{8, 0.005};
+  limits.rounding = 0.002;
+  limits.margin_free_weld = 0.001;
+  try {
+    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
+    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(
+        what.find("lower --weld below 0.001 (below which the writers' rounding keeps no margin)"),
+        std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("--weld 0"), std::string::npos) << what;
+  }
+  // Where the margin-free weld is above the width, the width is the figure.
+  limits.margin_free_weld = 0.01;
+  try {
+    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
+    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("lower --weld below 0.00141421 (its width: the writers' rounding keeps "
+                        "no margin there)"),
+              std::string::npos)
+        << error.what();
+  }
+  // Without a margin-free weld known, the advice is what it was.
+  limits.margin_free_weld = 0;
+  try {
+    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
+    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("turn the weld off (--weld 0)"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {
   EngineLimits limits{4, 0.01};
   EXPECT_TRUE(hull_meets_limits({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, limits));

@@ -259,11 +259,15 @@ class Constrainer {
     // decomposition cuts where a notch is deepest, and pieces cut apart by different notches
     // often make one piece within τ (the sample sprites: 10 % fewer hulls).
     if (merge_pieces_) merge_while([](const Slot& slot) { return slot.placed; });
+    // Every piece is tried before one is refused, so that the advice fits them all: a weld
+    // lowered below the first's width left the next one to refuse (2-3 rounds on real sprites).
+    std::vector<std::size_t> unplaced;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
       if (slots_[k].placed || slots_[k].merged) continue;
       // A grown hull would still hold a sliver.
-      if (slots_[k].is_sliver || !grow(k)) throw_unplaceable(slots_[k], source);
+      if (slots_[k].is_sliver || !grow(k)) unplaced.push_back(k);
     }
+    if (!unplaced.empty()) throw_unplaceable(unplaced, source);
     std::vector<CookedPiece> pieces;
     pieces.reserve(slots_.size());
     for (Slot& slot : slots_) {
@@ -748,7 +752,26 @@ class Constrainer {
   // A piece thinner than the weld that no hull within τ holds: the weld is too coarse for τ. Any
   // other piece is split down to convex parts and halves of them, which always fit; one that
   // could not be split (holes the decomposition kept) is an internal error.
-  [[noreturn]] void throw_unplaceable(const Slot& slot, std::string_view source) const {
+  // Of the unplaced slots (ascending), the first that is not merely thinner than the weld is
+  // named; when all are, the thinnest, whose width the advice must go below.
+  [[noreturn]] void throw_unplaceable(const std::vector<std::size_t>& unplaced,
+                                      std::string_view source) const {
+    std::size_t named = unplaced.front();
+    double named_width = std::numeric_limits<double>::infinity();
+    for (std::size_t k : unplaced) {
+      const Slot& slot = slots_[k];
+      if (slot.is_sliver || slot.splits_into_slivers || !is_small(slot.piece)) {
+        throw_unplaceable(slot, source, 0);
+      }
+      const double width = width_of(slot.piece.hull);
+      if (width < named_width) named = k, named_width = width;
+    }
+    throw_unplaceable(slots_[named], source, unplaced.size() - 1);
+  }
+
+  // others: how many more pieces are thinner than the weld and unplaced, none thinner.
+  [[noreturn]] void throw_unplaceable(const Slot& slot, std::string_view source,
+                                      std::size_t others) const {
     Box box(slot.piece.component.outer);
     std::ostringstream message;
     message << source << ": a piece of " << region_area(slot.piece.component)
@@ -783,8 +806,21 @@ class Constrainer {
     }
     message << ", and can be neither merged into a neighbour nor given an engine-ready hull "
                "within tau = "
-            << tau_ << " output units; ";
-    if (width > limits_.rounding) {
+            << tau_ << " output units";
+    if (others > 0) {
+      message << "; neither can " << others << " other piece" << (others == 1 ? "" : "s")
+              << ", none of them thinner";
+    }
+    message << "; ";
+    // A weld below the width less the rounding takes the piece; so does one below the width at
+    // which the rounding is 0, when that is more.
+    const double margin_free = std::min(width, limits_.margin_free_weld);
+    if (limits_.rounding > 0 && margin_free > 0 && margin_free > width - limits_.rounding) {
+      message << "lower --weld below " << margin_free
+              << (margin_free < width ? " (below which the writers' rounding keeps no margin)"
+                                      : " (its width: the writers' rounding keeps no margin there)")
+              << ", ";
+    } else if (width > limits_.rounding) {
       message << "lower --weld below " << width - limits_.rounding << " (its width"
               << (limits_.rounding > 0 ? " less the rounding" : "") << "), ";
     } else {

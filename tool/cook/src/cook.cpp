@@ -287,7 +287,8 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
 
 // What the writers' rounding may take from a distance between two hull vertices or from a turn's
 // height (EngineLimits::rounding, formats/SPEC.md §9) [output units], for a weld [output units]
-// (0: none), the regions in output units and the levels' τ, finest first.
+// (0: none), the regions in output units and the levels' τ, finest first; and the largest weld
+// at which it is 0 (EngineLimits::margin_free_weld).
 // - Where the bundle's grid is finer than the weld (its step at the least error bound the writer
 //   may choose, 1 % of τ or 1/64 px), twice its error bound E, for the largest hull the asset may
 //   have (its largest region's box grown by the coarsest τ: the writer's E is the largest hull's);
@@ -295,9 +296,14 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
 // - Where floats at the asset's farthest coordinate are finer than the weld, twice their spacing;
 //   floats as coarse as the weld keep distinct vertices apart as the grid does (a margin of their
 //   size refused thin stress polygons 1e5 from the origin).
-double writers_rounding(const std::vector<Region>& regions, const std::vector<double>& level_taus,
-                        double pixels_per_unit, double weld) {
-  if (!(weld > 0) || regions.empty()) return 0.0;
+struct WritersRounding {
+  double rounding = 0.0;
+  double margin_free_weld = 0.0;
+};
+WritersRounding writers_rounding(const std::vector<Region>& regions,
+                                 const std::vector<double>& level_taus, double pixels_per_unit,
+                                 double weld) {
+  if (!(weld > 0) || regions.empty()) return {};
   double largest_extent = 0.0, farthest = 0.0;
   for (const Region& region : regions) {
     Vec2 low{std::numeric_limits<double>::infinity()}, high = -low;
@@ -312,8 +318,9 @@ double writers_rounding(const std::vector<Region>& regions, const std::vector<do
   const double bound = format::quantization_error_bound(level_taus.front(), pixels_per_unit,
                                                         largest_extent + 2 * grown);
   const double spacing = format::float_spacing(farthest + grown);
-  return (std::sqrt(2.0) * least_bound < weld ? 2 * bound : 0.0) +
-         (spacing < weld ? 2 * spacing : 0.0);
+  return {(std::sqrt(2.0) * least_bound < weld ? 2 * bound : 0.0) +
+              (spacing < weld ? 2 * spacing : 0.0),
+          std::min(std::sqrt(2.0) * least_bound, spacing)};
 }
 
 // threads: how many may work on this one asset (its regions), when there are fewer
@@ -435,8 +442,11 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   }
   asset.tau = level_taus.front();
 
-  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld), 0.0, std::nullopt};
-  limits.rounding = writers_rounding(regions, level_taus, asset.pixels_per_unit, limits.weld);
+  EngineLimits limits{settings.max_verts, settings.weld.value_or(kDefaultWeld)};
+  const WritersRounding rounding =
+      writers_rounding(regions, level_taus, asset.pixels_per_unit, limits.weld);
+  limits.rounding = rounding.rounding;
+  limits.margin_free_weld = rounding.margin_free_weld;
   if (asset.tile) {
     const Vec2 a = asset.transform.apply({0.0, 0.0});
     const Vec2 b = asset.transform.apply({double(input.width), double(input.height)});

@@ -26,6 +26,9 @@ struct EngineLimits {
   // bundle's error bound E and a float's spacing there, formats/SPEC.md §9). With a weld, the
   // cooked hulls keep that much more, so that what a reader gets still keeps the weld.
   double rounding = 0.0;
+  // [output units] the largest weld at which the rounding above is 0 (the writers' grid and
+  // floats as coarse as the weld); 0: unknown. Only the advice of a refusal uses it.
+  double margin_free_weld = 0.0;
   // The least distance between two vertices of a cooked hull: the weld and the rounding (0
   // without a weld).
   double weld_distance() const { return weld > 0 ? weld + rounding : 0.0; }
