@@ -113,11 +113,30 @@ TEST_F(CookCli, FullyTransparentImageWarnsAndCooksAnEmptyAsset) {
   EXPECT_EQ(result.output.find("vertices"), std::string::npos) << result.output;
 }
 
-TEST_F(CookCli, MissingInputIsUsageOrInputError) {
-  auto result = run_hullcook("cook " + (directory / "missing.png").string() + " -o " +
-                             (directory / "out.json").string());
-  EXPECT_NE(result.exit_code, 0);
-  EXPECT_FALSE(fs::exists(directory / "out.json"));
+// Stop 55's audit of the README: a missing input was a usage error (exit 1, the argument
+// parser's words) in cook and link, bad input (exit 2, named) in the other commands.
+TEST_F(CookCli, MissingInputIsBadInputNamedInEveryCommand) {
+  const std::string missing = (directory / "missing.png").string();
+  const std::string out = (directory / "out.hcb").string();
+  for (const std::string& command :
+       {"cook " + missing + " -o " + out,
+        "cook " + missing + " " + directory.string() + " -o " + out,
+        "link " + (directory / "missing.hcf").string() + " -o " + out,
+        "decompose " + (directory / "missing.poly").string() + " --tau 1",
+        "preview " + missing + " -o " + (directory / "out.png").string()}) {
+    auto result = run_hullcook(command);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << command << result.output;
+    EXPECT_NE(result.output.find("hullcook: error: " + directory.string() + "/missing."),
+              std::string::npos)
+        << command << result.output;
+    EXPECT_FALSE(fs::exists(out)) << command;
+  }
+  // A directory given to link is named as such.
+  auto result = run_hullcook("link " + directory.string() + " -o " + out);
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find(directory.string() + ": a directory, not a fragment (.hcf)"),
+            std::string::npos)
+      << result.output;
 }
 
 // From the adversarial review of stop 48: a pipe named .png was reported missing.

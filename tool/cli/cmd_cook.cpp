@@ -116,8 +116,8 @@ void add_cook(CLI::App& root, CommandAction& action) {
   app->add_option("inputs", command->inputs,
                   "Image files, directories, .poly files or sprite sheets (TexturePacker or "
                   "Aseprite .json)")
-      ->required()
-      ->check(CLI::ExistingPath);
+      // A missing input is bad input (exit 2, named by the cook), not a usage error.
+      ->required();
   app->add_option("-o,--output", command->output,
                   "Output file; the writer is picked by extension: .hcb, "
                   ".gltf, .glb, .json, or .hcf: a fragment for hullcook link");

@@ -57,8 +57,8 @@ void add_link(CLI::App& root, CommandAction& action) {
       "without cooking again.\nAssets are ordered by name, as cook orders a directory, so that "
       "linking the fragments of a directory's images writes the bytes cooking it writes.");
   app->add_option("fragments", command->fragments, "Fragment files (.hcf)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      // A missing fragment is bad input (exit 2, named by read_fragment), not a usage error.
+      ->required();
   app->add_option("-o,--output", command->output,
                   "Output file; the writer is picked by extension: .hcb, .gltf, .glb, .json");
   app->add_option("--json", command->json, "Also write the debug JSON here");

@@ -70,7 +70,8 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->group("Decomposition");
   command
       .add_option("--lod", options.lods,
-                  "Extra levels of detail as coarser τ values, e.g. 8,2,0.5 (same units as --tau)")
+                  "Extra levels of detail as other τ values, coarser or finer, e.g. 8,2,0.5 (same units "
+                  "as --tau)")
       ->group("Decomposition");
 
   command.add_option("--alpha", settings.alpha, "Opaque where alpha >= this (0-255)")

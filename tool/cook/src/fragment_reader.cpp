@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -223,6 +224,13 @@ Fragment parse_fragment(std::string_view bytes, const std::string& file) {
 
 Fragment read_fragment(const std::filesystem::path& path) {
   refuse_unless_regular_file(path);
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path.string() + ": a directory, not a fragment (.hcf)");
+  }
+  if (!std::filesystem::exists(path, error) && !error) {
+    throw InputError(path.string() + ": no such file or directory");
+  }
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError(path.string() + ": cannot read");
   std::ostringstream bytes;
