@@ -69,9 +69,10 @@ void add_cook_options(CLI::App& command, Settings& settings, CookOptions& option
       ->check(number_in(0, 1e9, "a count of pieces (0 = no budget)"))
       ->group("Decomposition");
   command
-      .add_option("--lod", options.lods,
-                  "Extra levels of detail as other τ values, coarser or finer, e.g. 8,2,0.5 (same units "
-                  "as --tau)")
+      .add_option(
+          "--lod", options.lods,
+          "Extra levels of detail as other τ values, coarser or finer, e.g. 8,2,0.5 (same units "
+          "as --tau)")
       ->group("Decomposition");
 
   command.add_option("--alpha", settings.alpha, "Opaque where alpha >= this (0-255)")
