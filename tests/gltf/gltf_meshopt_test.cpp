@@ -213,6 +213,49 @@ TEST(GltfMeshopt, Sweep54_AHullThinnerThanTheStepIsWrittenOnAFinerGridOrRefused)
   EXPECT_NO_THROW(write_gltf({wide}, {.binary = true}));
 }
 
+// Stop 55's sweep: a --tile cell's full 32 px tile read back from --meshopt 16.0089 px from its
+// centre (the grid was centred on the hulls' box at an unaligned step), so neighbouring tiles
+// overlapped, where the bundle stores the borders exactly. A tile's grid is now the bundle's:
+// half a pixel over a power of two, its origin on the grid.
+TEST(GltfMeshopt, Sweep55_TileBordersAreReadBackExactly) {
+  for (const double pixels_per_unit : {1.0, 16.0, 32.0}) {
+    CookedAsset tile = test::base_asset("tile");
+    tile.pixels_per_unit = pixels_per_unit;
+    tile.tile = true;
+    tile.tau = 2.0 / pixels_per_unit;
+    const double half = 16.0 / pixels_per_unit;  // a 32 px cell about its centre
+    // Hulls whose box is off the cell's centre, so that a grid centred on it is unaligned.
+    tile.levels.push_back({tile.tau,
+                           {{{-half, -half}, {0.3 * half, -half}, {-half, 0.7 * half}},
+                            {{0.3 * half, -half}, {half, -half}, {half, -0.2 * half}}}});
+    const test::Parsed parsed =
+        test::parse(write_gltf({tile}, {.binary = true, .meshopt = true}), true);
+    const json& node = parsed.root["nodes"][0];
+    const double step = node["scale"][0];
+    const Vec2 origin{node["translation"][0].get<double>(), node["translation"][1].get<double>()};
+    const std::vector<double> values =
+        test::accessor_values(parsed, node["extras"]["hullcook"]["levels"][0]["vertices"]);
+    const std::size_t components = values.size() / 6;  // 6 vertices, VEC2 or VEC3
+    ASSERT_EQ(values.size() % 6, 0u);
+    std::vector<Vec2> read;
+    for (std::size_t i = 0; i < values.size(); i += components) {
+      read.push_back(origin + step * Vec2{values[i], values[i + 1]});
+    }
+    const std::vector<Vec2> cooked{tile.levels[0].hulls[0][0], tile.levels[0].hulls[0][1],
+                                   tile.levels[0].hulls[0][2], tile.levels[0].hulls[1][0],
+                                   tile.levels[0].hulls[1][1], tile.levels[0].hulls[1][2]};
+    for (std::size_t i = 0; i < cooked.size(); ++i) {
+      for (int axis = 0; axis < 2; ++axis) {
+        if (std::abs(cooked[i][axis]) == half) {
+          EXPECT_EQ(read[i][axis], cooked[i][axis])
+              << "ppu " << pixels_per_unit << " vertex " << i << " axis " << axis;
+        }
+      }
+    }
+    expect_meshopt_file_holds({tile}, true);
+  }
+}
+
 TEST(GltfMeshopt, SameBytesEveryRun) {
   const GltfOptions options{.binary = true, .meshopt = true};
   EXPECT_EQ(write_gltf(test::all_sample_assets(), options),

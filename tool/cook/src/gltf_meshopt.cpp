@@ -35,6 +35,21 @@ Quantization Quantization::of(const CookedAsset& asset) {
   // step's own 65 000 may come back a few ulps over 65 000 when the extent sets it: the test
   // against 65 000 refused hulls 1e6 wide.)
   constexpr double kQuantaAboutTheOrigin = 65532.0;
+  if (asset.tile) {
+    // As the bundle does (formats/SPEC.md §9): half a pixel over a power of two, with the origin
+    // on that grid, so that the cell's borders (at whole or half pixels from the pivot) are grid
+    // points, halved steps included, and neighbouring tiles' hulls meet exactly (stop 55's sweep:
+    // a full 32 px tile read back 16.0089 units wide of its centre).
+    const double half_pixel = 0.5 / asset.pixels_per_unit;
+    double aligned = half_pixel;
+    while (aligned > grid.step && aligned > 0.0) aligned *= 0.5;
+    if (aligned < half_pixel && extent / aligned > kQuantaAboutTheOrigin - 1) aligned *= 2;
+    if (aligned > 0.0 && std::isfinite(aligned)) {
+      grid.step = aligned;
+      grid.origin = {std::round(grid.origin.x / aligned) * aligned,
+                     std::round(grid.origin.y / aligned) * aligned};
+    }
+  }
   if (!(grid.step > 0.0) || !std::isfinite(grid.step) ||
       extent / grid.step > kQuantaAboutTheOrigin) {
     throw OutputError("asset " + asset.name + ": its hulls do not fit a 16-bit grid");
