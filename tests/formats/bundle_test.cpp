@@ -12,6 +12,7 @@
 #include "hullcook/runtime.h"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -529,6 +530,50 @@ TEST(Bundle, ReviewHullsThatTheRuntimesFloatsMakeReflexAreRefused) {
   }
   EXPECT_GT(stored, 250);  // most are kept convex by another rounding
   EXPECT_GT(refused, 3);
+}
+
+// Stop 55's sweep of generated polygons: Koch snowflakes with float32 coordinates near 1e5 were
+// written with exit 0, yet 5 of 613 hulls reached the runtime reflex (a vertex up to 0.0037 units
+// inward): floats there (0.0078 apart) resolve the grid's step, so no check ran, but they still
+// move each point by up to half their spacing, more than a near-collinear vertex's height. Hulls
+// at 1e5 with a vertex that far out of its neighbours' line now reach the runtime convex (such a
+// vertex is left out), within the bound and the floats' rounding.
+TEST(Bundle, Sweep55_HullsWhoseNearCollinearVertexFloatsTurnReflexAreStoredConvex) {
+  std::mt19937 random(55);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int stored = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const double offset = 1e5 * (1 + unit(random)), radius = 5 + 60 * unit(random);
+    const int sides = 3 + trial % 6;
+    Ring hull;
+    for (int i = 0; i < sides; ++i) {
+      const double angle = 2 * M_PI * (i + 0.8 * unit(random)) / sides;
+      hull.push_back(Vec2{offset, offset} + radius * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    // A vertex beside the middle of the first edge, out of its line by less than the floats'
+    // spacing: the grid's rounding keeps it only where it still turns left there.
+    const Vec2 a = hull[0], b = hull[1];
+    const Vec2 outward = glm::normalize(Vec2{b.y - a.y, a.x - b.x});
+    const double height = format::float_spacing(offset) * unit(random);
+    hull.insert(hull.begin() + 1, 0.5 * (a + b) + height * outward);
+    const CookedAsset cooked = test::make_asset("far", {{2.0, {hull}}});
+    std::string bytes, message;
+    ASSERT_TRUE(written_or_refused({cooked}, bytes, message)) << "trial " << trial << message;
+    AlignedBytes aligned(bytes);
+    Bundle bundle;
+    ASSERT_EQ(bundle.open(aligned.data(), aligned.size), Status::ok);
+    const runtime::Asset asset = bundle.find("far");
+    const Ring floats = stored_ring(asset.level(0).hull(0));
+    for (std::size_t i = 0, m = floats.size(); i < m; ++i) {
+      EXPECT_GE(orientation(floats[(i + m - 1) % m], floats[i], floats[(i + 1) % m]), 0)
+          << "trial " << trial << " vertex " << i << " turns right";
+    }
+    const double reach = asset.quantization_error() +
+                         std::sqrt(2.0) * 0.5 * format::float_spacing(offset + 2 * radius);
+    for (const Vec2& v : floats) EXPECT_LE(distance_to_convex(v, hull), reach) << trial;
+    ++stored;
+  }
+  EXPECT_EQ(stored, 400);
 }
 
 // What no rounding stores: a triangle a millionth across, a third of a quantum from a grid point,
