@@ -286,6 +286,111 @@ constexpr double kSmallestSpan = 1e-140;
 
 }  // namespace
 
+namespace {
+
+// Whether segments a-b and c-d cross at a point inside both (exact).
+bool cross_properly(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return orientation(a, b, c) * orientation(a, b, d) < 0 &&
+         orientation(c, d, a) * orientation(c, d, b) < 0;
+}
+
+// A vertex of ring, or the midpoint of an edge where it is exact (on the edge's line), strictly
+// inside region: two squares offset along a shared side have no vertex inside each other.
+std::optional<Vec2> point_inside(const Ring& ring, const Region& region, const Box& box) {
+  auto inside = [&](Vec2 p) {
+    return p.x > box.min_x && p.x < box.max_x && p.y > box.min_y && p.y < box.max_y &&
+           locate_point(region, p) == Location::inside;
+  };
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+    if (inside(a)) return a;
+    const Vec2 middle = 0.5 * (a + b);
+    if (orientation(a, b, middle) == 0 && inside(middle)) return middle;
+  }
+  return std::nullopt;
+}
+
+// The first pair of edges, one of each region, that cross inside both, in (ring, index) order of
+// first's edges.
+std::optional<std::pair<Edge, Edge>> proper_crossing(const Region& first, const Region& second,
+                                                     const Box& overlap) {
+  auto edges_in = [&](const Region& region) {
+    std::vector<Edge> edges;
+    auto add = [&](const Ring& ring, int index) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        const Box box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                      std::max(a.y, b.y)};
+        if (box.overlaps(overlap)) edges.push_back({index, i, a, b});
+      }
+    };
+    add(region.outer, 0);
+    for (std::size_t h = 0; h < region.holes.size(); ++h) {
+      add(region.holes[h], static_cast<int>(h + 1));
+    }
+    return edges;
+  };
+  const std::vector<Edge> ours = edges_in(first);
+  std::vector<Edge> theirs = edges_in(second);
+  auto low_x = [](const Edge& e) { return std::min(e.a.x, e.b.x); };
+  std::stable_sort(theirs.begin(), theirs.end(),
+                   [&](const Edge& e, const Edge& f) { return low_x(e) < low_x(f); });
+  for (const Edge& e : ours) {
+    const double high_x = std::max(e.a.x, e.b.x), low_x_e = low_x(e);
+    const double low_y = std::min(e.a.y, e.b.y), high_y = std::max(e.a.y, e.b.y);
+    for (const Edge& f : theirs) {
+      if (low_x(f) > high_x) break;
+      if (std::max(f.a.x, f.b.x) < low_x_e || std::max(f.a.y, f.b.y) < low_y ||
+          std::min(f.a.y, f.b.y) > high_y) {
+        continue;
+      }
+      if (cross_properly(e.a, e.b, f.a, f.b)) return std::pair{e, f};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void refuse_overlapping_regions(const std::vector<Region>& regions, std::string_view source) {
+  if (regions.size() < 2) return;
+  std::vector<Box> boxes;
+  boxes.reserve(regions.size());
+  for (const Region& region : regions) boxes.push_back(box_of(region.outer));
+  std::vector<std::size_t> order(regions.size());
+  for (std::size_t r = 0; r < order.size(); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return boxes[a].min_x < boxes[b].min_x; });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    for (std::size_t l = k + 1; l < order.size() && boxes[order[l]].min_x <= boxes[order[k]].max_x;
+         ++l) {
+      const std::size_t a = std::min(order[k], order[l]), b = std::max(order[k], order[l]);
+      if (!boxes[a].overlaps(boxes[b])) continue;
+      const std::string pair = std::string(source) + ": regions " + std::to_string(a + 1) +
+                               " and " + std::to_string(b + 1) + " overlap: ";
+      const Box overlap{
+          std::max(boxes[a].min_x, boxes[b].min_x), std::max(boxes[a].min_y, boxes[b].min_y),
+          std::min(boxes[a].max_x, boxes[b].max_x), std::min(boxes[a].max_y, boxes[b].max_y)};
+      if (const auto crossing = proper_crossing(regions[a], regions[b], overlap)) {
+        throw InputError(pair + "edge " + format_point(crossing->first.a) + "-" +
+                         format_point(crossing->first.b) + " crosses edge " +
+                         format_point(crossing->second.a) + "-" + format_point(crossing->second.b) +
+                         " (each region of a polygon file is a separate area; join overlapping "
+                         "chains into one)");
+      }
+      for (const auto& [inner, outer] : {std::pair{b, a}, std::pair{a, b}}) {
+        if (const auto point = point_inside(regions[inner].outer, regions[outer], boxes[outer])) {
+          throw InputError(pair + "region " + std::to_string(inner + 1) + "'s boundary at " +
+                           format_point(*point) + " lies inside region " +
+                           std::to_string(outer + 1) +
+                           " (each region of a polygon file is a separate area; an island "
+                           "belongs in a hole)");
+        }
+      }
+    }
+  }
+}
+
 void refuse_tiny_rings(const std::vector<Region>& regions, std::string_view source) {
   for (std::size_t r = 0; r < regions.size(); ++r) {
     auto check = [&](const Ring& ring, const std::string& name) {
