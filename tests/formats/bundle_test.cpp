@@ -596,6 +596,12 @@ TEST(Bundle, AHullSmallerThanAQuantumBesideOneSpanningTheGridIsRefusedWithTheWay
     EXPECT_NE(message.find("more than the 65535 that 16-bit deltas hold"), std::string::npos)
         << message;
     EXPECT_NE(message.find("--weld"), std::string::npos) << message;
+    // Stop 55's sweep: "a weld" was advised where the default one was on. The advice names the
+    // hull's thickness and a weld twice the coarser step (E = 60000 / (65000 sqrt 2), step
+    // sqrt 2 E = 0.923: 1.846, rounded up).
+    EXPECT_NE(message.find("at (100, 100), 7.07107e-07 units thick"), std::string::npos) << message;
+    EXPECT_NE(message.find("a weld of 1.9 or more, twice the coarser step"), std::string::npos)
+        << message;
     EXPECT_NE(message.find("write glTF"), std::string::npos) << message;
     // --simplify bounds a traced outline's error: no advice for a polygon file's asset.
     EXPECT_EQ(message.find("--simplify"), std::string::npos) << message;

@@ -91,8 +91,16 @@ struct Refusal {
   // The last hull too coarse at its step: the one that made the step finer (when it was).
   std::size_t thin_level = 0, thin_hull = 0;
   Vec2 thin_at{0.0, 0.0};
+  double thin_thickness = 0.0;  // [output units]
   bool thin_known = false;
 };
+
+// value rounded up to two significant digits, for advice that must not fall short.
+double rounded_up(double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) return value;
+  const double unit = std::pow(10.0, std::floor(std::log10(value)) - 1);
+  return std::ceil(value / unit) * unit;
+}
 
 // How a hull vertex meets the grid. nearest: the closest grid point. outward: of the corners of
 // the grid cell holding it that lie as close (step/√2, the error bound readers report), the one
@@ -432,6 +440,7 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
         if (outcome == Attempt::too_coarse) {
           refusal.thin_level = l, refusal.thin_hull = result.levels[l].size();
           refusal.thin_at = hull[0], refusal.thin_known = true;
+          refusal.thin_thickness = convex_thickness(hull);
         }
         if (outcome != Attempt::ok) return outcome;
         result.levels[l].push_back(std::move(quantized));
@@ -489,15 +498,19 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
     if (refusal.wide_step < first_step && refusal.thin_known) {
       problem += "; the step is that fine because hull " + std::to_string(refusal.thin_hull) +
                  " of level " + std::to_string(refusal.thin_level) + ", at " +
-                 detail::point(refusal.thin_at) +
-                 ", is thinner or smaller than a coarser step keeps a polygon within the "
-                 "required precision of " +
+                 detail::point(refusal.thin_at) + ", " + detail::number(refusal.thin_thickness) +
+                 " units thick, is thinner or smaller than a coarser step keeps a polygon within "
+                 "the required precision of " +
                  detail::number(bound) + " units; cook it with a larger tau" +
                  // --simplify bounds the traced outline's error [px]: images only.
                  (asset.image_width > 0 ? ", a larger --simplify" : "") +
-                 " or a weld (--weld, with tau above 0: a piece thinner than the weld is merged "
-                 "into a neighbour or given a hull that wide, within tau), or write glTF (.glb), "
-                 "which stores that hull if 32-bit floats resolve it";
+                 // Every hull at least twice the first step wide keeps a polygon at that step
+                 // (stop 55's sweep: the advice said "a weld" where the default one was on, and a
+                 // weld above this hull's thickness left the next thin hull).
+                 " or a weld of " + detail::number(rounded_up(2.0 * first_step)) +
+                 " or more, twice the coarser step (--weld, with tau above 0: a piece thinner "
+                 "than the weld is merged into a neighbour or given a hull that wide, within "
+                 "tau), or write glTF (.glb), which stores that hull if 32-bit floats resolve it";
     } else {
       problem += " within the required precision of " + detail::number(bound) +
                  " units; cook it with a larger tau, or write glTF (.glb), which stores any hull "
