@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 namespace hullcook {
 namespace {
@@ -166,6 +168,34 @@ TEST(CookRoundTrip, Review54_TheWeldMarginFollowsTheGridAndTheFloatsThatAReaderG
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_GE(expect_hulls_keep_the_weld(bundle, 0.005), 1u);
   }
+}
+
+// Stop 55's sweep: --meshopt's grid spans the whole asset, so its step (and rounding) is the
+// whole extent's, where the weld margin was the largest region's: a vertex of a real sprite read
+// back 0.000447 from its neighbours' line at --ppu 100 (weld/10 = 0.0005). Here an arc of 40
+// vertices, each 0.08-0.14 px over its neighbours' line, beside a square 200 units away.
+TEST(CookRoundTrip, Sweep55_MeshoptHullsAsReadBackKeepTheWeld) {
+  const fs::path dir = fs::path(HULLCOOK_BINARY_DIR) / "tests/formats/cook_roundtrip_weld";
+  fs::create_directories(dir);
+  const double radius = 500.0, centre_x = 200.0, centre_y = 150.0 - radius;
+  std::vector<Point> arc;
+  double angle = M_PI / 2 + 0.4;
+  for (int i = 0; angle > M_PI / 2 - 0.4; ++i) {
+    arc.push_back({centre_x + radius * std::cos(angle), centre_y + radius * std::sin(angle)});
+    angle -= (9.0 + 3.0 * std::fmod(i * 0.6180339887, 1.0)) / radius;
+  }
+  std::ostringstream text;
+  text.precision(17);
+  text << "2\n" << arc.size() + 2 << " out\n" << arc.front().x << " 0\n" << arc.back().x << " 0\n";
+  for (auto p = arc.rbegin(); p != arc.rend(); ++p) text << p->x << " " << p->y << "\n";
+  for (std::size_t i = 1; i <= arc.size() + 2; ++i) text << i << (i == arc.size() + 2 ? "\n" : " ");
+  text << "4 out\n20000 0\n20010 0\n20010 10\n20000 10\n1 2 3 4\n";
+  std::ofstream(dir / "arc.poly") << text.str();
+  const fs::path glb = dir / "arc.glb";
+  const auto result = test::run_hullcook("cook " + (dir / "arc.poly").string() +
+                                         " --ppu 100 --meshopt --max-verts 0 -o " + glb.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_GE(expect_hulls_keep_the_weld(glb, 0.005), 2u);
 }
 
 }  // namespace
