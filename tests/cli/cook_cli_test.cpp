@@ -139,6 +139,20 @@ TEST_F(CookCli, MissingInputIsBadInputNamedInEveryCommand) {
       << result.output;
 }
 
+// Stop 55's sweep: a coordinate of 1e15 + 1e7 was refused as "a coordinate of 1e+15 ... at most
+// 1e15", at 6 digits.
+TEST_F(CookCli, Sweep55_AHugeCoordinateIsNamedWithAllItsDigits) {
+  const fs::path poly = directory / "huge.poly";
+  std::ofstream(poly) << "1\n3 out\n1000000010000000 0\n1000000010000010 0\n"
+                         "1000000010000000 10\n1 2 3\n";
+  auto result = run_hullcook("cook " + poly.string() + " -o " + (directory / "out.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find("a coordinate of 1000000010000010 output units is too large (at "
+                               "most 1e15"),
+            std::string::npos)
+      << result.output;
+}
+
 // From the adversarial review of stop 48: a pipe named .png was reported missing.
 TEST_F(CookCli, ReviewAPipeIsBadInputNamedAsNoRegularFile) {
   const fs::path pipe = directory / "pipe.png";

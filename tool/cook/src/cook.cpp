@@ -31,6 +31,7 @@
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -279,7 +280,8 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
   }
   if (largest > kLargestOutputCoordinate) {
     std::ostringstream message;
-    message << source << ": a coordinate of " << largest
+    // All its digits: at 6, 1e15 + 1e7 read "1e+15 ... at most 1e15" (stop 55's sweep).
+    message << source << ": a coordinate of " << std::setprecision(17) << largest
             << " output units is too large (at most 1e15; scale the input or raise --ppu)";
     throw InputError(message.str());
   }
