@@ -138,6 +138,28 @@ TEST_F(GltfInspect, TextListsAssetsLevelsAndHulls) {
   EXPECT_NE(run.out.find("(0.33333334, -0.5)"), std::string::npos) << run.out;
 }
 
+// Stop 55: inspect of a --meshopt file did not say how far its grid moved the vertices, which
+// inspect of a bundle prints: half a step per coordinate, step/sqrt(2) in distance. A file
+// without --meshopt has no grid and no such figure.
+TEST_F(GltfInspect, Stop55_MeshoptFilesPrintTheirGridsErrorBound) {
+  const CookedAsset box = test::box_asset();
+  const std::string meshopt = write_gltf({box}, {.meshopt = true});
+  const double step = json::parse(meshopt)["nodes"][0]["scale"][0];
+  InspectRun run = inspect(write("box_meshopt.gltf", meshopt), false);
+  ASSERT_EQ(run.code, 0) << run.err;
+  // shortest_text prints the fewest digits that read back as the double: compare as numbers.
+  const std::size_t at = run.out.find("quantization error <= ");
+  ASSERT_NE(at, std::string::npos) << run.out;
+  EXPECT_DOUBLE_EQ(std::stod(run.out.substr(at + 22)), step / std::sqrt(2.0)) << run.out;
+  InspectRun json_run = inspect(write("box_meshopt2.gltf", meshopt), true);
+  ASSERT_EQ(json_run.code, 0) << json_run.err;
+  EXPECT_DOUBLE_EQ(json::parse(json_run.out)["assets"][0]["quantization_error"].get<double>(),
+                   step / std::sqrt(2.0));
+  InspectRun plain = inspect(write("box_plain.glb", write_gltf({box}, {.binary = true})), false);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("quantization error"), std::string::npos) << plain.out;
+}
+
 TEST_F(GltfInspect, DocumentWithoutAssetsHasNoAssets) {
   auto path = write("nothing.glb", write_gltf({}, {.binary = true}));
   InspectRun run = inspect(path, true);

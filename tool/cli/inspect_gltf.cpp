@@ -261,6 +261,11 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
 
   const NodeScaling scaling =
       node_scaling(node, "node " + std::to_string(node_index) + " (\"" + asset.name + "\")");
+  // --meshopt's grid (KHR_mesh_quantization): rounding to it moves a vertex by at most half a
+  // step per coordinate, the bound that inspect of a bundle prints too (docs/gltf-extras.md).
+  if (node.contains("scale") && scaling.scale.x == scaling.scale.y && scaling.scale.x > 0) {
+    asset.quantization_error = scaling.scale.x / std::sqrt(2.0);
+  }
   const json& levels = fields.array("levels");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
@@ -367,7 +372,12 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
               << asset.image_width << "x" << asset.image_height << " px, "
               << shortest_text(asset.pixels_per_unit) << " px/unit, pivot "
               << point_text(asset.pivot) << ", measure " << asset.measure << ", tau "
-              << shortest_text(asset.tau) << "\n";
+              << shortest_text(asset.tau);
+    if (asset.quantization_error) {
+      std::cout << ", quantization error <= " << shortest_text(*asset.quantization_error)
+                << " units";
+    }
+    std::cout << "\n";
     if (asset.physics) {
       const PhysicsProperties& p = *asset.physics;
       char bits[32];
