@@ -138,47 +138,6 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("missing.poly/nope", ""), HasSubstr("missing.poly"));
 }
 
-// Stop 55's sweep of generated polygons: two regions of a polygon file that overlap were
-// decomposed each on its own, into pieces covering the overlap twice (areas adding to 20,000 of
-// 17,500). Crossing, containment, a shift along a shared side (no vertex inside the other, no
-// crossing) and a copy are refused naming both regions; touching, sharing a side and an island in
-// a hole are not.
-TEST(PolyIo, Sweep55_OverlappingRegionsAreRefusedNamingBoth) {
-  auto rectangle = [](double x0, double y0, double x1, double y1) {
-    auto point = [](double x, double y) {
-      return std::to_string(x) + " " + std::to_string(y) + "\n";
-    };
-    return "4 out\n" + point(x0, y0) + point(x1, y0) + point(x1, y1) + point(x0, y1) + "1 2 3 4\n";
-  };
-  auto square = [&](double x, double y, double side) {
-    return rectangle(x, y, x + side, y + side);
-  };
-  EXPECT_THAT(
-      error_of("crossing.poly", "2\n" + square(0, 0, 100) + square(50, 50, 100)),
-      AllOf(HasSubstr("crossing.poly: regions 1 and 2 overlap: edge"), HasSubstr("crosses edge")));
-  EXPECT_THAT(error_of("plus.poly", "2\n" + rectangle(0, 40, 100, 60) + rectangle(40, 0, 60, 100)),
-              HasSubstr("regions 1 and 2 overlap"));
-  EXPECT_THAT(
-      error_of("inside.poly", "3\n" + square(0, 0, 100) + square(200, 0, 10) + square(20, 20, 10)),
-      AllOf(HasSubstr("inside.poly: regions 1 and 3 overlap: region 3's boundary at "
-                      "(20, 20) lies inside region 1"),
-            HasSubstr("an island belongs in a hole")));
-  EXPECT_THAT(error_of("around.poly", "2\n" + square(20, 20, 10) + square(0, 0, 100)),
-              HasSubstr("region 1's boundary at (20, 20) lies inside region 2"));
-  EXPECT_THAT(error_of("shifted.poly", "2\n" + rectangle(0, 0, 2, 1) + rectangle(1, 0, 3, 1)),
-              HasSubstr("regions 1 and 2 overlap"));
-  // Not overlaps.
-  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
-           {"side.poly", "2\n" + square(0, 0, 10) + square(10, 0, 10)},
-           {"corner.poly", "2\n" + square(0, 0, 10) + square(10, 10, 10)},
-           {"half_side.poly", "2\n" + square(0, 0, 10) + square(10, 5, 10)},
-           {"island.poly", "3\n" + square(0, 0, 100) +
-                               "4 in\n10 10\n90 10\n90 90\n10 90\n1 2 3 4\n" + square(40, 40, 20)},
-           {"apart.poly", "2\n" + square(0, 0, 10) + square(0, 20, 10)}}) {
-    EXPECT_EQ(error_of(name, text), "no error") << name;
-  }
-}
-
 // Below a span of 1e-140 the orientation tests' products of differences reach the subnormal range:
 // such rings were cleaned away as "fewer than 3 distinct points", or decomposed into pieces that
 // broke the output's contract (exit 4). They are refused by name, and rings just above are kept.

@@ -196,9 +196,7 @@ std::vector<Region> read_poly_file(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::vector<Region> regions = parse_poly(contents.str(), source);
   refuse_tiny_rings(regions, source);
-  regions = clean_and_validate(std::move(regions), source);
-  refuse_overlapping_regions(regions, source);
-  return regions;
+  return clean_and_validate(std::move(regions), source);
 }
 
 std::string format_poly(const std::vector<Region>& regions) {

@@ -19,14 +19,6 @@ namespace hullcook {
 std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_view source,
                                        unsigned threads = 1);
 
-// Throws InputError "source: regions A and B overlap: ..." for two regions (each valid, as
-// clean_and_validate leaves them) whose areas overlap: edges of theirs that cross at a point inside
-// both, or a vertex (or an edge's exact midpoint) of one strictly inside the other, outside its
-// holes. Regions may touch, share edges, and lie in each other's holes. For polygon files, whose
-// regions nothing else keeps apart (a tracer's never overlap). The pairs are tested in a fixed
-// order: the error is the same from run to run.
-void refuse_overlapping_regions(const std::vector<Region>& regions, std::string_view source);
-
 // Throws InputError "source: region R hole H: too small: ..." for a ring whose bounding box's
 // larger side is above 0 and below 1e-140: there the orientation tests' products of coordinate
 // differences reach the subnormal range and stop being exact. For input, before
