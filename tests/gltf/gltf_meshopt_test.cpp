@@ -254,6 +254,14 @@ TEST(GltfMeshopt, Sweep55_TileBordersAreReadBackExactly) {
     }
     expect_meshopt_file_holds({tile}, true);
   }
+  // The review of stop 55: a cell too wide for a half pixel's grid in 16 bits (33,000 px) was
+  // refused; it keeps the grid of other assets, its borders within half a step.
+  CookedAsset wide = test::base_asset("wide_tile");
+  wide.pixels_per_unit = 1.0;
+  wide.tile = true;
+  wide.tau = 2.0;
+  wide.levels.push_back({wide.tau, {{{-16500, -8}, {16500, -8}, {16500, 8}, {-16500, 8}}}});
+  expect_meshopt_file_holds({wide}, true);
 }
 
 TEST(GltfMeshopt, SameBytesEveryRun) {

@@ -39,12 +39,13 @@ Quantization Quantization::of(const CookedAsset& asset) {
     // As the bundle does (formats/SPEC.md §9): half a pixel over a power of two, with the origin
     // on that grid, so that the cell's borders (at whole or half pixels from the pivot) are grid
     // points, halved steps included, and neighbouring tiles' hulls meet exactly (stop 55's sweep:
-    // a full 32 px tile read back 16.0089 units wide of its centre).
+    // a full 32 px tile read back 16.0089 units wide of its centre). A cell too large for that
+    // step in 16 bits (over 32,765 px) keeps the grid below, as the weld margin assumes no
+    // coarser step (formats/SPEC.md §9).
     const double half_pixel = 0.5 / asset.pixels_per_unit;
     double aligned = half_pixel;
     while (aligned > grid.step && aligned > 0.0) aligned *= 0.5;
-    if (aligned < half_pixel && extent / aligned > kQuantaAboutTheOrigin - 1) aligned *= 2;
-    if (aligned > 0.0 && std::isfinite(aligned)) {
+    if (aligned > 0.0 && std::isfinite(aligned) && extent / aligned <= kQuantaAboutTheOrigin - 1) {
       grid.step = aligned;
       grid.origin = {std::round(grid.origin.x / aligned) * aligned,
                      std::round(grid.origin.y / aligned) * aligned};
