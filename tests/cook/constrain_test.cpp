@@ -382,46 +382,45 @@ TEST(Issue16, WeldAdviceNamesTheThinnestOfThePiecesItRefuses) {
   EXPECT_EQ(welded.size(), 3u);
 }
 
-// Stop 55: a piece thinner than the writers' rounding margin was told to turn the weld off,
-// where a weld at which the rounding keeps no margin takes it (101 of 321 Godot demo images at
-// --weld 0.5 --tau 0.02; all fit after one or two rounds of the advice).
-TEST(Issue16, WeldAdviceGoesBelowTheMarginFreeWeldRatherThanOff) {
+// Stop 55: a piece thinner than the writers' rounding margin was told to turn the weld off, where
+// a weld under the margin's steps takes it (101 of 321 Godot demo images at --weld 0.5 --tau
+// 0.02); and the review of that fix found the largest such weld under a step, not where no margin
+// is left (99 of 209 told to go below 1e-5 cooked at 0.022).
+TEST(Issue16, WeldAdviceIsTheLargestWeldThatTakesThePiece) {
   const Ring tiny{{0, 0}, {0.002, 0}, {0, 0.002}};  // 0.00141421 wide
   EngineLimits limits{8, 0.005};
+  limits.rounding_steps = {
+      .grid_from = 0.001, .grid_margin = 0.002, .float_from = 1e-6, .float_margin = 2e-6};
+  limits.rounding = limits.rounding_steps.at(limits.weld);
+  auto advice = [&](const EngineLimits& given) {
+    try {
+      apply_engine_limits({convex_piece(tiny)}, 0.0001, given, no_split, "tiny.png");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  // Under the grid's step only the floats' margin is left: 0.001 + 2e-6 < 0.00141421.
+  std::string what = advice(limits);
+  EXPECT_NE(what.find("lower --weld below 0.001 (where the writers' rounding margin steps down)"),
+            std::string::npos)
+      << what;
+  EngineLimits advised{8, 0.00099};
+  advised.rounding_steps = limits.rounding_steps;
+  advised.rounding = advised.rounding_steps.at(advised.weld);
+  EXPECT_EQ(advice(advised), "accepted");
+  // With the grid's step above the width, the width less the floats' margin is the figure.
+  limits.rounding_steps.grid_from = 0.01;
+  limits.rounding = limits.rounding_steps.at(limits.weld);
+  what = advice(limits);
+  EXPECT_NE(what.find("lower --weld below 0.00141221 (its width less the rounding there)"),
+            std::string::npos)
+      << what;
+  // Without the steps known, the advice is what it was.
+  limits.rounding_steps = {};
   limits.rounding = 0.002;
-  limits.margin_free_weld = 0.001;
-  try {
-    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
-    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
-  } catch (const InputError& error) {
-    const std::string what = error.what();
-    EXPECT_NE(
-        what.find("lower --weld below 0.001 (below which the writers' rounding keeps no margin)"),
-        std::string::npos)
-        << what;
-    EXPECT_EQ(what.find("--weld 0"), std::string::npos) << what;
-  }
-  // Where the margin-free weld is above the width, the width is the figure.
-  limits.margin_free_weld = 0.01;
-  try {
-    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
-    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what())
-                  .find("lower --weld below 0.00141421 (its width: the writers' rounding keeps "
-                        "no margin there)"),
-              std::string::npos)
-        << error.what();
-  }
-  // Without a margin-free weld known, the advice is what it was.
-  limits.margin_free_weld = 0;
-  try {
-    apply_engine_limits({convex_piece(tiny)}, 0.0001, limits, no_split, "tiny.png");
-    ADD_FAILURE() << "a piece no hull within tau can hold was accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("turn the weld off (--weld 0)"), std::string::npos)
-        << error.what();
-  }
+  what = advice(limits);
+  EXPECT_NE(what.find("turn the weld off (--weld 0)"), std::string::npos) << what;
 }
 
 TEST(EngineLimits, HullMeetsLimitsRejectsEachViolation) {

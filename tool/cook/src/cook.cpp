@@ -289,8 +289,8 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
 
 // What the writers' rounding may take from a distance between two hull vertices or from a turn's
 // height (EngineLimits::rounding, formats/SPEC.md §9) [output units], for a weld [output units]
-// (0: none), the regions in output units and the levels' τ, finest first; and the largest weld
-// at which it is 0 (EngineLimits::margin_free_weld).
+// (0: none), the regions in output units and the levels' τ, finest first; and how it depends on
+// the weld (EngineLimits::rounding_steps).
 // - Where the bundle's grid is finer than the weld (its step at the least error bound the writer
 //   may choose, 1 % of τ or 1/64 px), twice its error bound E, for the largest hull the asset may
 //   have (its largest region's box grown by the coarsest τ: the writer's E is the largest hull's;
@@ -301,7 +301,7 @@ void refuse_huge_coordinates(const std::vector<Region>& regions, const std::stri
 //   size refused thin stress polygons 1e5 from the origin).
 struct WritersRounding {
   double rounding = 0.0;
-  double margin_free_weld = 0.0;
+  EngineLimits::RoundingSteps steps;
 };
 WritersRounding writers_rounding(const std::vector<Region>& regions,
                                  const std::vector<double>& level_taus, double pixels_per_unit,
@@ -328,9 +328,9 @@ WritersRounding writers_rounding(const std::vector<Region>& regions,
   const double bound = format::quantization_error_bound(level_taus.front(), pixels_per_unit,
                                                         largest_extent + 2 * grown);
   const double spacing = format::float_spacing(farthest + grown);
-  return {(std::sqrt(2.0) * least_bound < weld ? 2 * bound : 0.0) +
-              (spacing < weld ? 2 * spacing : 0.0),
-          std::min(std::sqrt(2.0) * least_bound, spacing)};
+  const EngineLimits::RoundingSteps steps{std::sqrt(2.0) * least_bound, 2 * bound, spacing,
+                                          2 * spacing};
+  return {steps.at(weld), steps};
 }
 
 // threads: how many may work on this one asset (its regions), when there are fewer
@@ -456,7 +456,7 @@ CookedAsset cook_one(const InputFile& file, const Settings& given, AssetSettings
   const WritersRounding rounding =
       writers_rounding(regions, level_taus, asset.pixels_per_unit, limits.weld, settings.meshopt);
   limits.rounding = rounding.rounding;
-  limits.margin_free_weld = rounding.margin_free_weld;
+  limits.rounding_steps = rounding.steps;
   if (asset.tile) {
     const Vec2 a = asset.transform.apply({0.0, 0.0});
     const Vec2 b = asset.transform.apply({double(input.width), double(input.height)});

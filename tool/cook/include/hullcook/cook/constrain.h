@@ -26,9 +26,18 @@ struct EngineLimits {
   // bundle's error bound E and a float's spacing there, formats/SPEC.md §9). With a weld, the
   // cooked hulls keep that much more, so that what a reader gets still keeps the weld.
   double rounding = 0.0;
-  // [output units] the largest weld at which the rounding above is 0 (the writers' grid and
-  // floats as coarse as the weld); 0: unknown. Only the advice of a refusal uses it.
-  double margin_free_weld = 0.0;
+  // How that rounding depends on the weld [output units]: grid_margin where grid_from < weld, and
+  // float_margin where float_from < weld (the writers' grid and floats finer than the weld). All
+  // 0: unknown. Only the advice of a refusal uses it, to name a weld that takes the piece.
+  struct RoundingSteps {
+    double grid_from = 0.0, grid_margin = 0.0;
+    double float_from = 0.0, float_margin = 0.0;
+    bool known() const { return grid_margin > 0 || float_margin > 0; }
+    double at(double weld) const {
+      return (grid_from < weld ? grid_margin : 0.0) + (float_from < weld ? float_margin : 0.0);
+    }
+  };
+  RoundingSteps rounding_steps{};
   // The least distance between two vertices of a cooked hull: the weld and the rounding (0
   // without a weld).
   double weld_distance() const { return weld > 0 ? weld + rounding : 0.0; }
