@@ -749,9 +749,6 @@ class Constrainer {
     return piece.hull.size() < 3 || width_of(piece.hull) < limits_.weld_distance();
   }
 
-  // A piece thinner than the weld that no hull within τ holds: the weld is too coarse for τ. Any
-  // other piece is split down to convex parts and halves of them, which always fit; one that
-  // could not be split (holes the decomposition kept) is an internal error.
   // The largest X such that every weld below X plus its rounding stays below width (0: none);
   // the rounding is constant between its steps (EngineLimits::RoundingSteps).
   double largest_weld_below(double width) const {
@@ -769,6 +766,9 @@ class Constrainer {
     return best;
   }
 
+  // A piece thinner than the weld that no hull within τ holds: the weld is too coarse for τ. Any
+  // other piece is split down to convex parts and halves of them, which always fit; one that
+  // could not be split (holes the decomposition kept) is an internal error.
   // Of the unplaced slots (ascending), the first that is not merely thinner than the weld is
   // named; when all are, the thinnest, whose width the advice must go below.
   [[noreturn]] void throw_unplaceable(const std::vector<std::size_t>& unplaced,
