@@ -4,6 +4,7 @@
 #include "hullcook/cook/meshopt_library.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
+#include "hullcook/format/bundle_layout.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,9 +43,7 @@ Quantization Quantization::of(const CookedAsset& asset) {
     // a full 32 px tile read back 16.0089 units wide of its centre). A cell too large for that
     // step in 16 bits (over 32,765 px) keeps the grid below, as the weld margin assumes no
     // coarser step (formats/SPEC.md §9).
-    const double half_pixel = 0.5 / asset.pixels_per_unit;
-    double aligned = half_pixel;
-    while (aligned > grid.step && aligned > 0.0) aligned *= 0.5;
+    const double aligned = format::tile_step(asset.pixels_per_unit, grid.step);
     if (aligned > 0.0 && std::isfinite(aligned) && extent / aligned <= kQuantaAboutTheOrigin - 1) {
       grid.step = aligned;
       grid.origin = {std::round(grid.origin.x / aligned) * aligned,

@@ -215,21 +215,26 @@ bool floats_coarser(const std::vector<GridPoint>& grid, double quantum) {
   });
 }
 
-// Whether the runtime's f32 vertices (each grid point's value rounded to float once) no longer
-// bound a convex polygon, where floats are coarser than the grid: a line, a point, a reflex vertex
-// (stop 48's review: a sprite cooked with --pivot 2e5,2e5 had 8 of 22 hulls reflex in the
-// runtime) or a spike. They may repeat a vertex, or make it collinear. (Nearer the origin a
-// reader's floats lie within half a step of the grid, and a hull thinner than that, a sliver
-// stored at the grid's step beside a wide hull, is within the bound whatever its floats do.)
-bool floats_break(const std::vector<GridPoint>& grid, double quantum) {
-  if (!floats_coarser(grid, quantum)) return false;
+// The runtime's f32 vertices of grid: each grid point's value rounded to float once. Scratch of
+// the calling thread, valid until the next call.
+Ring& runtime_floats(const std::vector<GridPoint>& grid, double quantum) {
   thread_local Ring floats;
   floats.clear();
   for (const GridPoint& q : grid) {
     floats.push_back({format::nearest_float(static_cast<double>(q.x) * quantum),
                       format::nearest_float(static_cast<double>(q.y) * quantum)});
   }
-  return !is_weakly_convex(floats);
+  return floats;
+}
+
+// Whether the runtime's f32 vertices no longer bound a convex polygon, for a grid where floats
+// are coarser than the grid (floats_coarser): a line, a point, a reflex vertex
+// (stop 48's review: a sprite cooked with --pivot 2e5,2e5 had 8 of 22 hulls reflex in the
+// runtime) or a spike. They may repeat a vertex, or make it collinear. (Nearer the origin a
+// reader's floats lie within half a step of the grid, and a hull thinner than that, a sliver
+// stored at the grid's step beside a wide hull, is within the bound whatever its floats do.)
+bool floats_break(const std::vector<GridPoint>& grid, double quantum) {
+  return !is_weakly_convex(runtime_floats(grid, quantum));
 }
 
 // Leaves out of grid (strictly convex, counter-clockwise) each vertex whose f32 value turns right
@@ -240,12 +245,7 @@ bool floats_break(const std::vector<GridPoint>& grid, double quantum) {
 // at floats 0.0078 apart). Left out, it lies on the kept edge's side within that half spacing: the
 // caller measures the stored hull against the bound again.
 bool drop_float_reflex(std::vector<GridPoint>& grid, double quantum) {
-  thread_local Ring floats;
-  floats.clear();
-  for (const GridPoint& q : grid) {
-    floats.push_back({format::nearest_float(static_cast<double>(q.x) * quantum),
-                      format::nearest_float(static_cast<double>(q.y) * quantum)});
-  }
+  Ring& floats = runtime_floats(grid, quantum);
   bool dropped = false;
   for (bool changed = true; changed && grid.size() >= format::kMinHullVertices;) {
     changed = false;
@@ -327,8 +327,10 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
     }
   }
   strict_convex_hull(points, grid);
-  // Where floats are coarser than the grid, floats_break decides (below).
-  const bool dropped = !floats_coarser(grid, quantum) && drop_float_reflex(grid, quantum);
+  // Where floats are coarser than the grid, floats_break decides (below); leaving vertices out
+  // does not change which.
+  const bool coarse = floats_coarser(grid, quantum);
+  const bool dropped = !coarse && drop_float_reflex(grid, quantum);
   if (grid.size() < format::kMinHullVertices) return Attempt::too_coarse;
 
   std::int64_t min_x = grid[0].x, max_x = min_x, min_y = grid[0].y, max_y = min_y;
@@ -365,7 +367,7 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
     }
     if (!(hausdorff(hull, stored) <= bound)) return Attempt::too_coarse;
   }
-  if (floats_break(grid, quantum)) {
+  if (coarse && floats_break(grid, quantum)) {
     refusal.too_far = broken_by_floats(hull, grid, quantum);
     return Attempt::broken_by_floats;
   }
@@ -404,14 +406,9 @@ QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<Cooked
     result.step = std::nextafter(result.step, 0.0f);
   }
   if (asset.tile) {
-    // Half a pixel over the largest power of two that fits: the cell's borders, at whole or half
-    // pixels from the pivot, fall on the grid (and stay on it when the step is halved below), so
-    // neighbouring tiles' hulls meet exactly.
-    const double half_pixel = 0.5 / asset.pixels_per_unit;
-    double aligned = half_pixel;
-    while (aligned > result.step && aligned > 0.0) aligned *= 0.5;
-    // Exact when pixels per unit is a power of two; otherwise the borders are off by the f32
-    // rounding of the step, far below any engine's slop.
+    // Neighbouring tiles' hulls meet exactly. With pixels per unit not a power of two, the
+    // borders are off by the f32 rounding of the step, far below any engine's slop.
+    const double aligned = format::tile_step(asset.pixels_per_unit, result.step);
     if (aligned > 0.0) result.step = static_cast<float>(aligned);
   }
   // A tiny pixels per unit makes the 1/64 px floor of the bound huge (issue 19's fuzzing of link:

@@ -306,6 +306,16 @@ inline double quantization_error_bound(double finest_tau, double pixels_per_unit
                    largest_hull_extent / (kHullExtentInQuanta * 1.4142135623730951));
 }
 
+// A --tile cell's step (SPEC §9) [output units]: half a pixel over the largest power of two that
+// is not larger than step, so that the cell's borders, at whole or half pixels from the pivot,
+// fall on the grid (and stay on it when the step is halved); 0 for a pixels per unit that leaves
+// none. Exact when pixels per unit is a power of two.
+inline double tile_step(double pixels_per_unit, double step) noexcept {
+  double aligned = 0.5 / pixels_per_unit;
+  while (aligned > step && aligned > 0.0) aligned *= 0.5;
+  return aligned;
+}
+
 // A quantized coordinate in output units (SPEC §8): exact integer sum, one rounding to double.
 inline double dequantize(std::int32_t base, std::int16_t delta, float quant_step) noexcept {
   return static_cast<double>(static_cast<std::int64_t>(base) + delta) *
