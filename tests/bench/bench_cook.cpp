@@ -7,7 +7,8 @@
 //      writing) and its ratio to the decode floor, one thread;
 //   4. the whole cook with 1 and 2 threads (and of the heaviest image alone, which its threads
 //      split per region and per piece), and the peak memory of the cooking process;
-//   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent).
+//   5. the tracer's and cleaner's cost against the outline's length (the fitted exponent);
+//   6. the engine limits' cost against a regular polygon's vertex count (the fitted exponent).
 // On samples/sprites and on a synthetic set written here (many sizes, holes, many blobs).
 // Options: --runs N (repetitions, default 5), --quick (fewer and smaller images),
 // --write-synthetic DIR (only write the synthetic set into DIR, to profile a cook of it),
@@ -693,6 +694,18 @@ std::vector<fs::path> cookable_images(const fs::path& dir, const fs::path& links
 // ---- 5. Scaling of the tracer and the cleaner with the outline's length
 // --------------------------
 
+// The slope of the least-squares line through (x[i], y[i]): on logarithms, a fitted exponent.
+double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / y.size();
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+  }
+  return sxy / sxx;
+}
+
 void print_scaling(int runs, bool quick) {
   report(
       "\n5. Tracer and cleaner against the outline's length (blobs with wavy edges and "
@@ -728,20 +741,56 @@ void print_scaling(int runs, bool quick) {
     log_trace.push_back(std::log(trace));
     log_clean.push_back(std::log(clean));
   }
-  auto slope = [&](const std::vector<double>& y) {
-    const double mx = std::accumulate(log_n.begin(), log_n.end(), 0.0) / log_n.size();
-    const double my = std::accumulate(y.begin(), y.end(), 0.0) / y.size();
-    double sxy = 0, sxx = 0;
-    for (std::size_t i = 0; i < y.size(); ++i) {
-      sxy += (log_n[i] - mx) * (y[i] - my);
-      sxx += (log_n[i] - mx) * (log_n[i] - mx);
-    }
-    return sxy / sxx;
-  };
+  auto slope = [&](const std::vector<double>& y) { return least_squares_slope(log_n, y); };
   report(
       "   fitted exponent (time ~ vertices^k): trace k = %.2f, clean k = %.2f"
       "   (target: linear, k ~ 1)\n",
       slope(log_trace), slope(log_clean));
+}
+
+// ---- 6. The engine limits against a convex outline's vertex count
+// ----------------------------
+
+// A regular polygon (a CAD circle): every vertex is nearly collinear with its neighbours, so the
+// hull fitter mends thousands of vertices one edge at a time before it fits hulls of 8. Each
+// removal once cost a pass over the hull (stop 55: 5,000 vertices 4.2 s, 20,000 65 s).
+void print_regular_polygons(const fs::path& scratch, int runs, bool quick) {
+  report(
+      "\n6. Engine limits against the vertex count of a regular polygon (radius 100, default "
+      "settings, --max-verts 8, one thread, best of %d)\n",
+      runs);
+  report("   %12s %8s %12s %12s\n", "vertices", "hulls", "cook ms", "us/vertex");
+  std::vector<double> log_n, log_ms;
+  const std::vector<int> counts =
+      quick ? std::vector<int>{1250, 2500, 5000} : std::vector<int>{1250, 2500, 5000, 10000};
+  for (int n : counts) {
+    const fs::path file = scratch / ("regular_" + std::to_string(n) + ".poly");
+    {
+      std::ofstream out(file);
+      out << "1\n" << n << " out\n";
+      out.precision(17);
+      for (int i = 0; i < n; ++i) {
+        const double angle = 2 * std::acos(-1.0) * i / n;
+        out << 100 * std::cos(angle) << ' ' << 100 * std::sin(angle) << '\n';
+      }
+    }
+    Settings settings;
+    settings.threads = 1;
+    std::size_t hulls = 0;
+    const double ms = best_of(n >= 5000 ? 1 : runs, [&] {
+      const auto start = Clock::now();
+      const CookResult result = cook({file}, settings);
+      const double elapsed = ms_since(start);
+      hulls = 0;
+      for (const CookedAsset& asset : result.assets) hulls += asset.stats.hulls;
+      return elapsed;
+    });
+    report("   %12d %8zu %12.1f %12.1f\n", n, hulls, ms, ms * 1e3 / n);
+    log_n.push_back(std::log(n));
+    log_ms.push_back(std::log(ms));
+  }
+  report("   fitted exponent (time ~ vertices^k): k = %.2f   (stop 55: k ~ 2)\n",
+         least_squares_slope(log_n, log_ms));
 }
 
 }  // namespace
@@ -790,6 +839,7 @@ int main(int argc, char** argv) {
     if (!files.empty()) print_set(dir.string(), files, scratch, runs);
   }
   print_scaling(std::min(runs, 3), quick);
+  print_regular_polygons(scratch, std::min(runs, 3), quick);
   fs::remove_all(scratch);
   if (docs) write_docs(*docs);
   return 0;

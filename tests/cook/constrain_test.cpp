@@ -1010,5 +1010,35 @@ TEST(OutlineDistance, Issue54_ContainsInRowsOfManyEdgesAnswersAsARayParity) {
   EXPECT_GT(inside, 300);
 }
 
+// A CAD circle of thousands of vertices, each nearly collinear with its neighbours: mending
+// removes edges one at a time. Each candidate looked at every vertex of the component and copied
+// the hull, so that a 20,000-gon took 65 s to cook; a removal now measures again only the
+// vertices nearest the three edges it changes (the same hulls come out: see
+// Issue17_MendingChecksWhatARemovalChangesAsTheWholeHullChecksDo above).
+TEST(EngineLimits, Stop56_MendingALongNearlyCollinearHullMeasuresOnlyWhatARemovalMoves) {
+  const int n = 4000;
+  Ring circle;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2 * M_PI * i / n;
+    circle.push_back(100.0 * Vec2{std::cos(angle), std::sin(angle)});
+  }
+  const CookedPiece piece = convex_piece_of(circle);
+  const FitterInputs inputs(piece, 2.0);
+  const EngineLimits limits{0, 0.005};
+  HullFitter fitter = inputs.fitter(limits);
+  ASSERT_TRUE(fitter.holds_component(piece.hull));
+  const std::optional<Ring> mended = fitter.mend_local_violations(piece.hull);
+  ASSERT_TRUE(mended.has_value());
+  // Every vertex turned by 0.00012, under the least turn (0.0005): most were removed.
+  EXPECT_LT(mended->size(), static_cast<std::size_t>(n / 2));
+  EXPECT_TRUE(hull_meets_limits(*mended, limits));
+  EXPECT_TRUE(fitter.holds_component(*mended));
+  EXPECT_TRUE(inputs.reach.growth_within(*mended, piece.hull, 2.0));
+  // Each of the thousands of removals looked at a few vertices, not at all 4,000 of them.
+  const std::uint64_t removals = n - mended->size();
+  EXPECT_GT(removals, 1000u);
+  EXPECT_LT(fitter.depth_visits(), 20 * removals) << removals << " removals";
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -68,6 +68,15 @@ struct Box {
   }
 };
 
+// width_of(hull) < width, for hull convex. Its area is at most its width times its diameter, at
+// most its box's diagonal: most hulls are shown wide by that, without width_of's quadratic cost
+// (a hull of --max-verts 0, or a piece's before it is fitted, may have thousands of vertices).
+bool narrower_than(const Ring& hull, double width) {
+  const Box box(hull);
+  if (std::abs(signed_area(hull)) >= width * glm::length(box.high - box.low)) return false;
+  return width_of(hull) < width;
+}
+
 bool is_convex_without_holes(const CookedPiece& piece) {
   if (!piece.component.holes.empty()) return false;
   double component_area = std::abs(signed_area(piece.component.outer));
@@ -735,18 +744,13 @@ class Constrainer {
     return false;
   }
 
-  // Whether hull (convex) is thinner than merge_width. Its area is at most its width times its
-  // diameter, at most its box's diagonal: most hulls are shown wide by that, without width_of's
-  // quadratic cost (a hull of --max-verts 0 may have thousands of vertices).
+  // Whether hull (convex) is thinner than merge_width.
   bool is_thin(const Ring& hull) const {
-    if (merge_width_ <= 0) return false;
-    const Box box(hull);
-    if (std::abs(signed_area(hull)) >= merge_width_ * glm::length(box.high - box.low)) return false;
-    return width_of(hull) < merge_width_;
+    return merge_width_ > 0 && narrower_than(hull, merge_width_);
   }
 
   bool is_small(const CookedPiece& piece) const {
-    return piece.hull.size() < 3 || width_of(piece.hull) < limits_.weld_distance();
+    return piece.hull.size() < 3 || narrower_than(piece.hull, limits_.weld_distance());
   }
 
   // The largest X such that every weld below X plus its rounding stays below width (0: none);

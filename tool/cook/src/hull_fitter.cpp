@@ -9,10 +9,14 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <functional>
 #include <limits>
 #include <map>
 #include <tuple>
+#include <unordered_map>
 
 namespace hullcook {
 namespace {
@@ -376,13 +380,91 @@ std::optional<Ring> HullFitter::fit(Ring hull) {
   return std::nullopt;
 }
 
+// Vertices are found by the coordinates of their edge's start, as holds_component_after compares
+// them (so -0 and 0 are one key): each removal then visits only the vertices of the three edges
+// it changes. Visiting every vertex per candidate made mending a hull of thousands of nearly
+// collinear vertices quadratic.
+class HullFitter::DepthIndex {
+ public:
+  DepthIndex(const Region& component, std::vector<VertexDepth> depths)
+      : depths_(std::move(depths)), position_(depths_.size()) {
+    vertices_.reserve(depths_.size());
+    for_each_vertex(component, [&](Vec2 v) { vertices_.push_back(v); });
+    for (std::size_t k = 0; k < depths_.size(); ++k) {
+      insert(k);
+      if (!depths_[k].not_outside) by_rounding_.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+
+  Vec2 vertex(std::size_t k) const { return vertices_[k]; }
+  const VertexDepth& depth(std::size_t k) const { return depths_[k]; }
+
+  // Calls visit(k) once for each vertex that may lie outside the hull by rounding, and for each
+  // other vertex whose edge starts at one of starts; stops when visit returns false.
+  template <typename Visit>
+  bool for_each_near(const std::array<Vec2, 3>& starts, Visit visit) const {
+    for (std::uint32_t k : by_rounding_) {
+      if (!depths_[k].not_outside && !visit(k)) return false;
+    }
+    for (std::size_t s = 0; s < starts.size(); ++s) {
+      if (std::find(starts.begin(), starts.begin() + s, starts[s]) != starts.begin() + s) continue;
+      const auto bucket = by_start_.find(key(starts[s]));
+      if (bucket == by_start_.end()) continue;
+      for (std::uint32_t k : bucket->second) {
+        if (depths_[k].not_outside && !visit(k)) return false;
+      }
+    }
+    return true;
+  }
+
+  void update(std::size_t k, const VertexDepth& depth) {
+    const bool moved = !(depths_[k].edge_start == depth.edge_start);
+    if (moved) erase(k);
+    depths_[k] = depth;  // a vertex once known not outside stays so (by_rounding_ skips it)
+    if (moved) insert(k);
+  }
+
+ private:
+  using Key = std::pair<std::uint64_t, std::uint64_t>;
+  struct KeyHash {
+    std::size_t operator()(const Key& key) const {
+      return std::hash<std::uint64_t>{}(key.first * 0x9E3779B97F4A7C15ull ^ key.second);
+    }
+  };
+  static Key key(Vec2 p) {
+    Key bits;
+    const double x = p.x + 0.0, y = p.y + 0.0;  // -0 + 0 is 0
+    std::memcpy(&bits.first, &x, sizeof x);
+    std::memcpy(&bits.second, &y, sizeof y);
+    return bits;
+  }
+  void insert(std::size_t k) {
+    std::vector<std::uint32_t>& bucket = by_start_[key(depths_[k].edge_start)];
+    position_[k] = static_cast<std::uint32_t>(bucket.size());
+    bucket.push_back(static_cast<std::uint32_t>(k));
+  }
+  void erase(std::size_t k) {
+    std::vector<std::uint32_t>& bucket = by_start_[key(depths_[k].edge_start)];
+    const std::uint32_t last = bucket.back();
+    bucket[position_[k]] = last;
+    position_[last] = position_[k];
+    bucket.pop_back();
+  }
+
+  std::vector<VertexDepth> depths_;
+  std::vector<Vec2> vertices_;
+  std::vector<std::uint32_t> position_;  // per vertex: where it is in its bucket
+  std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> by_start_;
+  std::vector<std::uint32_t> by_rounding_;  // not known not to lie outside, when indexed
+};
+
 // Removes, one at a time, the cheapest edge that mends a weld or collinearity violation.
 std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
   // A candidate's checks look only at what removing its edge changes (see holds_component_after
   // and OutlineDistance::apex_growth_within) once every vertex is known to pass in the hull:
   // mending a hull of thousands of nearly collinear vertices one edge at a time, each candidate
   // checked against every vertex and edge, took minutes.
-  std::vector<VertexDepth> depths;
+  std::optional<DepthIndex> depths;
   std::vector<std::pair<std::size_t, VertexDepth>> changed;
   bool local = false, measured = false;
   // The error of each apex, by its coordinates: most apexes stay the same from one removal to
@@ -405,12 +487,23 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     Vec2 apex;
   };
   std::vector<Candidate> scanned;
+  // Removing an edge only grows the hull: once its area is twice too_small's, rounding cannot
+  // bring it back under, and it is not summed again after each removal.
+  bool large_enough = false;
   while (true) {
-    if (too_small(hull)) return std::nullopt;
+    if (hull.size() < 3 || (!large_enough && too_small(hull))) return std::nullopt;
+    if (!large_enough) {
+      const double weld = limits_.weld_distance();
+      large_enough = std::abs(signed_area(hull)) >= weld * weld;
+    }
     std::vector<std::size_t> edges;
     if (!queued) edges = edges_to_mend(hull, limits_);
     if (queued ? queue.wanted_count() == 0 : edges.empty()) return hull;
-    if (!measured) local = !whole_hull_checks_ && measure_depths(hull, depths), measured = true;
+    if (!measured) {
+      std::vector<VertexDepth> measured_depths;
+      local = !whole_hull_checks_ && measure_depths(hull, measured_depths), measured = true;
+      if (local) depths.emplace(component_, std::move(measured_depths));
+    }
     scanned.clear();
     for (std::size_t edge : edges) {
       std::optional<Vec2> apex = removed_edge_apex(hull, edge);
@@ -423,17 +516,26 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     });
     // Tries a candidate; true when it passed and hull is without its edge.
     auto try_removing = [&](std::size_t edge, Vec2 at) {
-      Ring next = without_edge(hull, edge, at);
-      // without_edge puts the apex where the edge started, or last when the edge closed the ring.
-      const std::size_t apex = edge + 1 == hull.size() ? next.size() - 1 : edge;
+      // The hull without the edge is built only when a check needs it whole: most look only
+      // round the apex, and a copy per candidate made mending a long hull quadratic.
+      std::optional<Ring> whole;
+      const std::function<const Ring&()> next = [&]() -> const Ring& {
+        if (!whole) whole = without_edge(hull, edge, at);
+        return *whole;
+      };
       const bool passes =
-          local ? holds_component_after(next, apex, hull, edge, depths, changed) &&
-                      reach_.apex_growth_within(next, apex, hull, !edges_suffice_, bound_)
-                : holds_component(next) && growth_within(next, hull);
+          local ? holds_component_after(at, next, hull, edge, *depths, changed) &&
+                      reach_.apex_growth_within(at, next, hull, edge, !edges_suffice_, bound_)
+                : holds_component(next()) && growth_within(next(), hull);
       if (!passes) return false;
-      for (const auto& [k, depth] : changed) depths[k] = depth;
-      if (queued) queue.remove_edge(edge, next);
-      hull = std::move(next);
+      if (local) {
+        for (const auto& [k, depth] : changed) depths->update(k, depth);
+      }
+      // As without_edge: the apex where the edge started, or last when the edge closed the ring.
+      const std::size_t n = hull.size();
+      hull[edge] = at;
+      hull.erase(hull.begin() + static_cast<std::ptrdiff_t>((edge + 1) % n));
+      if (queued) queue.remove_edge(edge, hull);
       return true;
     };
     bool grown = false;
@@ -479,9 +581,8 @@ bool HullFitter::measure_depths(const Ring& hull, std::vector<VertexDepth>& dept
 }
 
 bool HullFitter::holds_component_after(
-    const Ring& next, std::size_t apex, const Ring& hull, std::size_t edge,
-    const std::vector<VertexDepth>& depths,
-    std::vector<std::pair<std::size_t, VertexDepth>>& changed) const {
+    Vec2 at, const std::function<const Ring&()>& next, const Ring& hull, std::size_t edge,
+    const DepthIndex& depths, std::vector<std::pair<std::size_t, VertexDepth>>& changed) const {
   changed.clear();
   const std::size_t m = hull.size();
   // next keeps hull's edges but three: edge is removed, and the two beside it are extended along
@@ -496,49 +597,41 @@ bool HullFitter::holds_component_after(
     const double t = glm::dot(v - a, along);
     return t >= 0 && t <= glm::dot(along, along);
   };
-  const double rounding = 1e-12 * size_of(next);
-  bool ok = true;
-  std::size_t k = 0;
-  for_each_vertex(component_, [&](Vec2 v) {
-    if (!ok) return;
-    const VertexDepth& known = depths[k];
+  // Asked only of a vertex outside (a pass over next per candidate made mending quadratic).
+  auto rounding = [&] { return 1e-12 * size_of(next()); };
+  return depths.for_each_near({before, from, to}, [&](std::size_t k) {
+    ++depth_visits_;
+    const Vec2 v = depths.vertex(k);
+    const VertexDepth& known = depths.depth(k);
     const bool by_rounding = !known.not_outside;
     const Vec2 start = known.edge_start;
-    if (!by_rounding && start != before && start != from && start != to) {
-      ++k;
-      return;
-    }
     if (!by_rounding && start == before && projects_onto(v, before, from)) {
-      ++k;  // the extended edge still starts at before
-      return;
+      return true;  // the extended edge still starts at before
     }
     if (!by_rounding && start == to && projects_onto(v, to, after)) {
-      changed.push_back({k, {known.squared, next[apex], known.not_outside}});
-      ++k;
-      return;
+      changed.push_back({k, {known.squared, at, known.not_outside}});
+      return true;
     }
     // The nearer new edge bounds the depth from above, and a vertex within allowed of it passes:
     // recorded with that edge, which stays in the hull until a removal changes it (then the
     // vertex is measured again), the bound stays true. Measured over every edge otherwise, or
     // when the vertex may lie outside hull.
-    const Vec2 at = next[apex];
     const double to_before = point_segment_distance_squared(v, before, at);
     const double to_after = point_segment_distance_squared(v, at, after);
     auto [squared, edge_start] =
         std::pair<double, Vec2>{std::min(to_before, to_after), to_after < to_before ? at : before};
     if (by_rounding || !(std::sqrt(squared) <= allowed_[k] * (1 + 1e-12))) {
-      std::tie(squared, edge_start) = squared_distance_and_edge(v, next);
+      std::tie(squared, edge_start) = squared_distance_and_edge(v, next());
     }
     const double depth = std::sqrt(squared);
     // Not outside hull: not outside next, which holds hull (its new edges lie on the lines of
     // hull's; within rounding of them holds_component does not ask).
     const bool outside =
-        !known.not_outside && squared > 0 && locate_point(next, v) == Location::outside;
-    if (depth > allowed_[k] * (1 + 1e-12) || (outside && depth > rounding)) ok = false;
+        !known.not_outside && squared > 0 && locate_point(next(), v) == Location::outside;
+    if (depth > allowed_[k] * (1 + 1e-12) || (outside && depth > rounding())) return false;
     changed.push_back({k, {squared, edge_start, !outside}});
-    ++k;
+    return true;
   });
-  return ok;
 }
 
 namespace {

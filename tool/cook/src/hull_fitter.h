@@ -6,6 +6,7 @@
 #include "hullcook/cook/constrain.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -78,6 +79,9 @@ class HullFitter {
   void infer_reaches(bool infer) { infer_reaches_ = infer; }
   // How many meeting points of two hull lines this fitter has tested (what inferring saves).
   std::uint64_t apex_tests() const { return apex_tests_; }
+  // How many component vertices mending has looked at again after a removal (a few per removal,
+  // not the whole component).
+  std::uint64_t depth_visits() const { return depth_visits_; }
 
   // True when every point grown adds to known (convex, inside it) is within bound.
   bool growth_within(const Ring& grown, const Ring& known) const;
@@ -105,11 +109,14 @@ class HullFitter {
   };
   // Measures every component vertex in hull; true when every one passes holds_component.
   bool measure_depths(const Ring& hull, std::vector<VertexDepth>& depths) const;
-  // holds_component(next), for next = hull less edge with its apex at next[apex] (see
+  // The component's vertices and their depths in the hull being mended, found by the start of
+  // the edge each was measured against (defined in hull_fitter.cpp).
+  class DepthIndex;
+  // holds_component(next()), for next() = hull less edge with its apex at `at` (see
   // mend_local_violations) and depths from a hull that passes: measures again only the vertices
   // the removal may move, listing what they become in changed.
-  bool holds_component_after(const Ring& next, std::size_t apex, const Ring& hull, std::size_t edge,
-                             const std::vector<VertexDepth>& depths,
+  bool holds_component_after(Vec2 at, const std::function<const Ring&()>& next, const Ring& hull,
+                             std::size_t edge, const DepthIndex& depths,
                              std::vector<std::pair<std::size_t, VertexDepth>>& changed) const;
   bool too_small(const Ring& hull) const;
   std::optional<Ring> reduce_vertex_count(const Ring& hull);
@@ -138,6 +145,7 @@ class HullFitter {
   bool inferring_ = false;  // whether reach_from infers a scan's first lines from the line before
   bool inferred_ = false;   // whether it did
   mutable std::uint64_t apex_tests_ = 0;
+  mutable std::uint64_t depth_visits_ = 0;
   std::vector<double> corner_reach_;  // per vertex of the hull being reduced: its distance
   double outside_by_rounding_ = 0;    // how far a component vertex may lie outside that hull
   // reduce_vertex_count's chains: the one being followed, and those that closed.

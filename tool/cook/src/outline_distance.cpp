@@ -84,10 +84,13 @@ Interval capsule_interval(Vec2 p, Vec2 v, Vec2 a, Vec2 b, double radius) {
 }
 
 // The parameters of segment p + t v (t in [0, 1]) inside the convex counter-clockwise ring.
-Interval clip_to_convex(Vec2 p, Vec2 v, const Ring& convex) {
+// The part of segment p + t v, t in [0, 1], left of convex's edges first .. first + count - 1
+// (cyclically; all of them: inside convex).
+Interval clip_to_convex(Vec2 p, Vec2 v, const Ring& convex, std::size_t first, std::size_t count) {
   if (convex.size() < 3) return {};
   Interval inside{0, 1};
-  for (std::size_t i = 0, n = convex.size(); i < n && !inside.empty(); ++i) {
+  for (std::size_t k = 0, n = convex.size(); k < count && !inside.empty(); ++k) {
+    const std::size_t i = (first + k) % n;
     Vec2 edge = convex[(i + 1) % n] - convex[i];
     // Left of the edge: cross(edge, p + t v - convex[i]) >= 0.
     inside = intersect(inside,
@@ -445,9 +448,10 @@ bool OutlineDistance::square_inside(Vec2 centre, double half) const {
   return !crossed;
 }
 
-bool OutlineDistance::new_part_within(Vec2 a, Vec2 b, const Ring& known, double tau) const {
+bool OutlineDistance::new_part_within(Vec2 a, Vec2 b, const Ring& known, std::size_t first,
+                                      std::size_t count, double tau) const {
   const Vec2 v = b - a;
-  const Interval old = clip_to_convex(a, v, known);
+  const Interval old = clip_to_convex(a, v, known, first, count);
   if (old.empty() || old.high - old.low < 1e-9) return segment_within(a, b, tau);
   // The part inside known is not checked again; the new parts are taken a little long, so that
   // rounding never skips a new point.
@@ -459,7 +463,7 @@ bool OutlineDistance::new_part_within(Vec2 a, Vec2 b, const Ring& known, double 
 
 bool OutlineDistance::new_edges_within(const Ring& grown, const Ring& known, double tau) const {
   for (std::size_t i = 0, n = grown.size(); i < n; ++i) {
-    if (!new_part_within(grown[i], grown[(i + 1) % n], known, tau)) return false;
+    if (!new_part_within(grown[i], grown[(i + 1) % n], known, 0, known.size(), tau)) return false;
   }
   return true;
 }
@@ -468,14 +472,20 @@ bool OutlineDistance::growth_within(const Ring& grown, const Ring& known, double
   return new_edges_within(grown, known, tau) && cells_beyond_within(grown, grown, known, tau);
 }
 
-bool OutlineDistance::apex_growth_within(const Ring& grown, std::size_t apex, const Ring& known,
-                                         bool with_cells, double tau) const {
-  const std::size_t n = grown.size();
-  const Vec2 before = grown[(apex + n - 1) % n], at = grown[apex], after = grown[(apex + 1) % n];
-  if (!new_part_within(before, at, known, tau) || !new_part_within(at, after, known, tau)) {
+bool OutlineDistance::apex_growth_within(Vec2 at, const std::function<const Ring&()>& grown,
+                                         const Ring& known, std::size_t edge, bool with_cells,
+                                         double tau) const {
+  const std::size_t m = known.size();
+  const Vec2 before = known[(edge + m - 1) % m], after = known[(edge + 2) % m];
+  // The two new edges lie on the lines of known's edges beside the removed one, and leave known
+  // where those edges end: only the edges round those ends can bound the part inside. Clipping
+  // by all of known's edges made mending a hull of thousands of vertices quadratic.
+  const std::size_t first = m > 8 ? (edge + m - 2) % m : 0, count = m > 8 ? 5 : m;
+  if (!new_part_within(before, at, known, first, count, tau) ||
+      !new_part_within(at, after, known, first, count, tau)) {
     return false;
   }
-  return !with_cells || cells_beyond_within(grown, Ring{at}, known, tau);
+  return !with_cells || cells_beyond_within(grown(), Ring{at}, known, tau);
 }
 
 bool OutlineDistance::cells_beyond_within(const Ring& grown, const Ring& candidates,

@@ -7,6 +7,7 @@
 #include "hullcook/core/polygon.h"
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -48,12 +49,13 @@ class OutlineDistance {
   // polygon that needs more than a few thousand cells is refused.
   bool growth_within(const Ring& grown, const Ring& known, double tau) const;
 
-  // For grown made from known by moving one vertex out to an apex on the lines of its edges
-  // (and dropping its successor: a hull edge removed): its two edges at that apex as
-  // new_edges_within checks them, and with_cells, the area as growth_within proves it. The other
-  // edges are known's, and no other vertex lies beyond a line of known.
-  bool apex_growth_within(const Ring& grown, std::size_t apex, const Ring& known, bool with_cells,
-                          double tau) const;
+  // For grown() made from known by moving one vertex out to an apex on the lines of its edges
+  // (and dropping its successor: known's edge `edge` removed, its neighbours meeting at `at`):
+  // its two edges at that apex as new_edges_within checks them, and with_cells, the area as
+  // growth_within proves it. The other edges are known's, and no other vertex lies beyond a line
+  // of known. grown() is asked for only with cells.
+  bool apex_growth_within(Vec2 at, const std::function<const Ring&()>& grown, const Ring& known,
+                          std::size_t edge, bool with_cells, double tau) const;
 
  private:
   using Edge = EdgeSpan;
@@ -69,8 +71,10 @@ class OutlineDistance {
   // of segment ab.
   template <typename Visit>
   void for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
-  // new_edges_within for one edge ab of grown.
-  bool new_part_within(Vec2 a, Vec2 b, const Ring& known, double tau) const;
+  // new_edges_within for one edge ab of grown, whose part inside known lies left of known's
+  // edges first .. first + count - 1 (cyclically).
+  bool new_part_within(Vec2 a, Vec2 b, const Ring& known, std::size_t first, std::size_t count,
+                       double tau) const;
   // growth_within's proof by cells, for every edge of known that a point of candidates (those of
   // grown that may lie beyond one) lies beyond.
   bool cells_beyond_within(const Ring& grown, const Ring& candidates, const Ring& known,
