@@ -20,6 +20,7 @@
 #include "bench_support.h"
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/clean.h"
+#include "hullcook/core/poly_io.h"
 #include "hullcook/trace/trace.h"
 
 #include <fcntl.h>
@@ -766,13 +767,12 @@ void print_regular_polygons(const fs::path& scratch, int runs, bool quick) {
   for (int n : counts) {
     const fs::path file = scratch / ("regular_" + std::to_string(n) + ".poly");
     {
-      std::ofstream out(file);
-      out << "1\n" << n << " out\n";
-      out.precision(17);
+      Ring circle;
       for (int i = 0; i < n; ++i) {
         const double angle = 2 * std::acos(-1.0) * i / n;
-        out << 100 * std::cos(angle) << ' ' << 100 * std::sin(angle) << '\n';
+        circle.push_back(100.0 * Vec2{std::cos(angle), std::sin(angle)});
       }
+      std::ofstream(file) << format_poly({Region{circle, {}}});
     }
     Settings settings;
     settings.threads = 1;
