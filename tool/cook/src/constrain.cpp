@@ -1,5 +1,6 @@
 #include "hullcook/cook/constrain.h"
 
+#include "convex_width.h"
 #include "diagonals.h"
 #include "hull_fitter.h"
 #include "hullcook/core/parallel_for.h"
@@ -32,20 +33,6 @@ namespace hullcook {
 namespace {
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
-// The smallest distance between two parallel lines enclosing the convex ring.
-double width_of(const Ring& hull) {
-  double width = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-    Vec2 edge = hull[(i + 1) % n] - hull[i];
-    double length = glm::length(edge);
-    if (length == 0) continue;
-    double farthest = 0;
-    for (Vec2 v : hull) farthest = std::max(farthest, cross(edge, v - hull[i]) / length);
-    width = std::min(width, farthest);
-  }
-  return width;
-}
 
 double perimeter(const Ring& ring) {
   double length = 0;
