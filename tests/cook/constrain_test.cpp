@@ -1040,5 +1040,29 @@ TEST(EngineLimits, Stop56_MendingALongNearlyCollinearHullMeasuresOnlyWhatARemova
   EXPECT_LT(fitter.depth_visits(), 20 * removals) << removals << " removals";
 }
 
+// A rectangle 2e6 units long, one unit in the last place narrower than the weld: thinner than the
+// weld, as width_of measures it. is_small's area shortcut (stop 56) showed it wide by rounding,
+// and the cook refused it where the width's measure merges the piece or gives it a hull (the
+// helper's differential test against the previous binary).
+TEST(EngineLimits, Stop56_APieceOneUlpThinnerThanTheWeldIsSmallWhateverItsArea) {
+  const double length = 1981709.148037771, width = 0.004999999999999999;
+  const Ring rectangle{{0, 0}, {length, 0}, {length, width}, {0, width}};
+  const EngineLimits limits{8, 0.005};
+  std::vector<CookedPiece> pieces;
+  ASSERT_NO_THROW(pieces = apply_engine_limits({convex_piece_of(rectangle)}, 0.001, limits,
+                                               decompose_at, "thin_rect"));
+  // (The test contract's sampling along 2e6 units at τ = 0.001 would take minutes.)
+  ASSERT_FALSE(pieces.empty());
+  double area = 0;
+  for (const CookedPiece& piece : pieces) {
+    EXPECT_TRUE(hull_meets_limits(piece.hull, limits));
+    for (Vec2 corner : piece.component.outer) {
+      EXPECT_NE(locate_point(piece.hull, corner), Location::outside);
+    }
+    area += region_area(piece.component);
+  }
+  EXPECT_NEAR(area, length * width, 1e-9 * length * width);
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -56,11 +56,12 @@ struct Box {
 };
 
 // width_of(hull) < width, for hull convex. Its area is at most its width times its diameter, at
-// most its box's diagonal: most hulls are shown wide by that, without width_of's quadratic cost
-// (a hull of --max-verts 0, or a piece's before it is fitted, may have thousands of vertices).
+// most its box's diagonal: most hulls are shown wide by that, without measuring the width. The
+// factor 2 leaves room for the area's rounding: without it, a rectangle 2e6 units long and
+// 1e-18 units under the weld wide was shown wide (stop 56).
 bool narrower_than(const Ring& hull, double width) {
   const Box box(hull);
-  if (std::abs(signed_area(hull)) >= width * glm::length(box.high - box.low)) return false;
+  if (std::abs(signed_area(hull)) >= 2 * width * glm::length(box.high - box.low)) return false;
   return width_of(hull) < width;
 }
 
