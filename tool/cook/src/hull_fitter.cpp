@@ -487,14 +487,23 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     Vec2 apex;
   };
   std::vector<Candidate> scanned;
-  // Removing an edge only grows the hull: once its area is twice too_small's, rounding cannot
-  // bring it back under, and it is not summed again after each removal.
+  // Removing an edge only grows the hull: once its area is twice too_small's, by more than the
+  // sum's rounding can take, it stays above (summing it after each removal made mending a long
+  // hull quadratic). A sliver far longer than the weld, whose sum is all rounding, is summed on.
   bool large_enough = false;
   while (true) {
     if (hull.size() < 3 || (!large_enough && too_small(hull))) return std::nullopt;
     if (!large_enough) {
       const double weld = limits_.weld_distance();
-      large_enough = std::abs(signed_area(hull)) >= weld * weld;
+      double twice = 0, magnitude = 0;
+      for (std::size_t i = 1; i + 1 < hull.size(); ++i) {
+        const Vec2 a = hull[i] - hull[0], b = hull[i + 1] - hull[0];
+        twice += a.x * b.y - a.y * b.x;
+        magnitude += std::abs(a.x * b.y) + std::abs(a.y * b.x);
+      }
+      // Without a weld, too_small asks only for 3 vertices.
+      large_enough = weld == 0 ||
+                     (std::abs(twice) >= 2 * weld * weld && 1e-12 * magnitude <= 0.2 * weld * weld);
     }
     std::vector<std::size_t> edges;
     if (!queued) edges = edges_to_mend(hull, limits_);
