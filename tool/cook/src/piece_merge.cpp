@@ -92,7 +92,9 @@ bool folds_back(Vec2 before, Vec2 shared, Vec2 after) {
 
 }  // namespace
 
-bool meet_at_two_points(const Ring& a, const Ring& b) {
+bool meet_at_two_points(const Ring& a, const Ring& b) { return boundary_points_shared(a, b) == 2; }
+
+int boundary_points_shared(const Ring& a, const Ring& b) {
   const Box a_box = box_of(a), b_box = box_of(b);
   auto on_boundary_of = [](const Ring& ring, const Box& box, Vec2 p) {
     if (!box.holds(p)) return false;
@@ -111,7 +113,8 @@ bool meet_at_two_points(const Ring& a, const Ring& b) {
     }
     return false;
   };
-  return second_found(a, b, b_box) || second_found(b, a, a_box);
+  if (second_found(a, b, b_box) || second_found(b, a, a_box)) return 2;
+  return first ? 1 : 0;
 }
 
 std::optional<Region> merge_components(const Region& a_region, const Region& b_region) {

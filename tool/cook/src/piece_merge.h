@@ -22,4 +22,8 @@ std::optional<Region> merge_components(const Region& a, const Region& b);
 // merge_components asks it first.
 bool meet_at_two_points(const Ring& a, const Ring& b);
 
+// How many distinct points the two rings' vertices give on the other's boundary, as
+// meet_at_two_points counts them: 0, 1, or 2 for two or more.
+int boundary_points_shared(const Ring& a, const Ring& b);
+
 }  // namespace hullcook
