@@ -1064,5 +1064,21 @@ TEST(EngineLimits, Stop56_APieceOneUlpThinnerThanTheWeldIsSmallWhateverItsArea) 
   EXPECT_NEAR(area, length * width, 1e-9 * length * width);
 }
 
+// A strip 15.3 long and 0.0009 wide, thinner than the weld, at --max-verts 3 and τ 0.5: the
+// small hulls' triangles had bases twice its length, 7.6 past its ends, so it was refused
+// (stop 56's sliver stress family). A flat triangle reaching half τ past each end holds it.
+TEST(EngineLimits, Stop56_ASliverLongerThanTwiceTauGetsAFlatTriangle) {
+  const double length = 15.29, width = 0.000905;
+  // Its sides' vertices are collinear: the cleaner would leave its four corners.
+  const Ring strip{{0, 0}, {length, 0}, {length, width}, {0, width}};
+  const EngineLimits limits{3, 0.005};
+  std::vector<CookedPiece> pieces;
+  ASSERT_NO_THROW(
+      pieces = apply_engine_limits({convex_piece_of(strip)}, 0.5, limits, decompose_at, "strip"));
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_EQ(pieces[0].hull.size(), 3u);
+  expect_pieces_contract(pieces, {Region{strip, {}}}, 0.5, limits);
+}
+
 }  // namespace
 }  // namespace hullcook

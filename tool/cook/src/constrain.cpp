@@ -739,7 +739,7 @@ class Constrainer {
     std::vector<double> allowed = allowed_depths(slot.piece.component, known, tau_);
     HullFitter fitter(slot.piece.component, allowed, *outline_, HullFitter::Reach::outline, false,
                       tau_, limits_);
-    for (Ring& candidate : small_hulls(slot.piece.component.outer, limits_)) {
+    for (Ring& candidate : small_hulls(slot.piece.component.outer, limits_, tau_)) {
       if (!hull_meets_limits(candidate, limits_) || !fitter.holds_component(candidate) ||
           !fitter.growth_within(candidate, known_inside ? known : Ring{})) {
         continue;

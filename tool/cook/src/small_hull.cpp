@@ -18,7 +18,7 @@ double area_of(const Ring& ring) { return std::abs(signed_area(ring)); }
 
 }  // namespace
 
-std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
+std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits, double reach) {
   if (ring.empty()) return {};
   // Coordinates relative to a vertex keep a tiny piece's precision far from the origin.
   const Vec2 origin = ring.front();
@@ -40,7 +40,7 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
   const double turn =
       limits.weld > 0 ? limits.least_turn() * kWeldMargin : kCollinearFractionOfWeld * size;
 
-  std::vector<Ring> candidates;
+  std::vector<Ring> candidates, flat;
   for (Vec2 u : directions) {
     Vec2 v{-u.y, u.x};
     double u0 = std::numeric_limits<double>::infinity(), u1 = -u0, v0 = u0, v1 = -u0;
@@ -67,9 +67,25 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits) {
         {at(middle - half_base, v0), at(middle + half_base, v0), at(middle, v0 + rise)});
     candidates.push_back(
         {at(middle + half_base, v1), at(middle - half_base, v1), at(middle, v1 - rise)});
+    // Flat triangles whose base reaches a fraction of reach past each end, not half the ring's
+    // length: a sliver longer than twice τ has no other hull of 3 vertices within τ. The sides
+    // pass over the ring's ends at its thickness when the apex rises (thickness) x (half the
+    // length + the reach past) / (the reach past); half again more keeps them clear.
+    for (double fraction : {0.5, 0.9}) {
+      const double past = fraction * reach;
+      if (!(past > 0) || past >= 0.5 * (u1 - u0)) continue;
+      const double over =
+          std::max({1.5 * (v1 - v0) * (0.5 * (u1 - u0) + past) / past, 1.5 * size, 1.5 * turn});
+      const double low = u0 - past, high = u1 + past;
+      flat.push_back({at(low, v0), at(high, v0), at(middle, v0 + over)});
+      flat.push_back({at(high, v1), at(low, v1), at(middle, v1 - over)});
+    }
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const Ring& a, const Ring& b) { return area_of(a) < area_of(b); });
+  auto by_area = [](const Ring& a, const Ring& b) { return area_of(a) < area_of(b); };
+  std::stable_sort(candidates.begin(), candidates.end(), by_area);
+  // After the others: they are tried only where none of those holds the ring within τ.
+  std::stable_sort(flat.begin(), flat.end(), by_area);
+  candidates.insert(candidates.end(), flat.begin(), flat.end());
   return candidates;
 }
 
