@@ -45,6 +45,20 @@ TEST(ConvexWidth, Stop56_CalipersGiveTheScansWidthOnHullsOfManyVertices) {
   }
   EXPECT_GT(compared, 280);
   EXPECT_GT(calipers, 150);
+  // A lens 2e-15 thick over 2 long, turned by 30 degrees: its heights tie within rounding over
+  // runs longer than the calipers look ahead (the stop 56 review: 3.998e-15 against 4e-15), so it
+  // takes the scan.
+  Ring lens;
+  for (int side : {1, -1}) {
+    for (int i = 0; i <= 200; ++i) {
+      const double x = side * (-1 + 2.0 * i / 200), y = side * 2e-15 * (1 - x * x);
+      lens.push_back({x * std::cos(M_PI / 6) - y * std::sin(M_PI / 6),
+                      x * std::sin(M_PI / 6) + y * std::cos(M_PI / 6)});
+    }
+  }
+  const Ring lens_hull = convex_hull(lens);
+  ASSERT_GE(lens_hull.size(), kCalipersFrom);
+  EXPECT_EQ(width_of(lens_hull), width_of_by_scan(lens_hull));
   // A rectangle: its width is its shorter side, however many points its long sides carry.
   Ring rectangle;
   for (int i = 0; i <= 100; ++i) rectangle.push_back({i * 0.5, 0.0});

@@ -1,5 +1,8 @@
 #include "convex_width.h"
 
+#include "hullcook/core/predicates.h"
+
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -28,6 +31,14 @@ double width_of_by_scan(const Ring& hull) {
 double width_of(const Ring& hull) {
   const std::size_t n = hull.size();
   if (n < kCalipersFrom) return width_of_by_scan(hull);
+  // The calipers take the heights to rise and then fall along the ring: true of a strictly
+  // convex ring, unless its heights tie within rounding over more vertices than the look-ahead
+  // below (a lens thinner than 1e-12 of its length). Other rings take the scan.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orientation(hull[i == 0 ? n - 1 : i - 1], hull[i], hull[(i + 1) % n]) <= 0) {
+      return width_of_by_scan(hull);
+    }
+  }
   // As the edge turns counter-clockwise, its farthest vertex moves forward: each edge starts
   // from the last one's and steps on while the next lies no nearer. A step back by rounding on a
   // nearly straight run would stop it short, so a few vertices past where it stops are looked at
@@ -62,6 +73,9 @@ double width_of(const Ring& hull) {
     farthest = std::max(farthest, height(far));
     width = std::min(width, farthest);
   }
+  Vec2 low = hull[0], high = hull[0];
+  for (Vec2 p : hull) low = glm::min(low, p), high = glm::max(high, p);
+  if (!(width > 1e-9 * glm::length(high - low))) return width_of_by_scan(hull);
   return width;
 }
 

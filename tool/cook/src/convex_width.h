@@ -8,7 +8,8 @@ namespace hullcook {
 // The least distance between two parallel lines holding the convex ring (counter-clockwise), one
 // of them through an edge: over its edges, the farthest vertex left of the edge's line [units];
 // infinity when no edge has a length. Linear in the vertex count (rotating calipers) from
-// kCalipersFrom vertices, where it gives what the scan of every vertex per edge gives below.
+// kCalipersFrom vertices on a strictly convex ring not thinner than 1e-9 of its size, where it
+// gives what the scan of every vertex per edge gives; quadratic (the scan) otherwise.
 double width_of(const Ring& hull);
 
 // For tests: width_of by scanning every vertex for every edge (quadratic).

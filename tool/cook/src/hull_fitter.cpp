@@ -502,8 +502,11 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
         magnitude += std::abs(a.x * b.y) + std::abs(a.y * b.x);
       }
       // Without a weld, too_small asks only for 3 vertices.
-      large_enough = weld == 0 ||
-                     (std::abs(twice) >= 2 * weld * weld && 1e-12 * magnitude <= 0.2 * weld * weld);
+      // The sum's worst rounding is (n + 2) units in the last place of the magnitude; later
+      // hulls, grown within τ from this one, have about its magnitude.
+      large_enough =
+          weld == 0 || (std::abs(twice) >= 2 * weld * weld &&
+                        double(hull.size() + 2) * 0x1p-52 * magnitude <= 0.25 * weld * weld);
     }
     std::vector<std::size_t> edges;
     if (!queued) edges = edges_to_mend(hull, limits_);

@@ -79,8 +79,8 @@ class HullFitter {
   void infer_reaches(bool infer) { infer_reaches_ = infer; }
   // How many meeting points of two hull lines this fitter has tested (what inferring saves).
   std::uint64_t apex_tests() const { return apex_tests_; }
-  // How many component vertices mending has looked at again after a removal (a few per removal,
-  // not the whole component).
+  // How many component vertices mending has looked at again for a candidate removal: those
+  // nearest its three edges and any that may lie outside by rounding, not the whole component.
   std::uint64_t depth_visits() const { return depth_visits_; }
 
   // True when every point grown adds to known (convex, inside it) is within bound.

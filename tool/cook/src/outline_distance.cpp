@@ -83,7 +83,6 @@ Interval capsule_interval(Vec2 p, Vec2 v, Vec2 a, Vec2 b, double radius) {
   return covered;
 }
 
-// The parameters of segment p + t v (t in [0, 1]) inside the convex counter-clockwise ring.
 // The part of segment p + t v, t in [0, 1], left of convex's edges first .. first + count - 1
 // (cyclically; all of them: inside convex).
 Interval clip_to_convex(Vec2 p, Vec2 v, const Ring& convex, std::size_t first, std::size_t count) {
@@ -478,8 +477,9 @@ bool OutlineDistance::apex_growth_within(Vec2 at, const std::function<const Ring
   const std::size_t m = known.size();
   const Vec2 before = known[(edge + m - 1) % m], after = known[(edge + 2) % m];
   // The two new edges lie on the lines of known's edges beside the removed one, and leave known
-  // where those edges end: only the edges round those ends can bound the part inside. Clipping
-  // by all of known's edges made mending a hull of thousands of vertices quadratic.
+  // where those edges end: only the edges round those ends bound the part inside (in exact
+  // arithmetic; a far edge within rounding of the line could only cut it shorter, where known's
+  // proven boundary lies). Clipping by all of known's edges made mending a long hull quadratic.
   const std::size_t first = m > 8 ? (edge + m - 2) % m : 0, count = m > 8 ? 5 : m;
   if (!new_part_within(before, at, known, first, count, tau) ||
       !new_part_within(at, after, known, first, count, tau)) {

@@ -68,7 +68,7 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits, doub
     candidates.push_back(
         {at(middle + half_base, v1), at(middle - half_base, v1), at(middle, v1 - rise)});
     // Flat triangles whose base reaches a fraction of reach past each end, not half the ring's
-    // length: a sliver longer than twice τ has no other hull of 3 vertices within τ. The sides
+    // length: for a sliver much longer than τ, the triangles above reach past τ. The sides
     // pass over the ring's ends at its thickness when the apex rises (thickness) x (half the
     // length + the reach past) / (the reach past); half again more keeps them clear.
     for (double fraction : {0.5, 0.9}) {

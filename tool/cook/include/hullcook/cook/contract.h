@@ -25,10 +25,10 @@ struct ContractTerms {
 // outline (τ 4)". The contract:
 //  - partition: every component is a valid region (a simple counter-clockwise outer ring with
 //    clockwise holes inside it) and no sliver (thinner than 1e-9 of its length); their areas add
-//    up to the outline's (relative 1e-9, plus what the sums of coordinate products may round
-//    away: a long thin piece's area is a small difference of large products); the boundaries of
-//    each region's pieces (by CookedPiece::region) cancel that region's edge for edge (an edge
-//    left over is a gap or an overlap);
+//    up to the outline's (relative 1e-9, the areas summed exactly but for a final rounding: a
+//    long thin piece's area is a small difference of large products); the boundaries of each
+//    region's pieces (by CookedPiece::region) cancel that region's edge for edge (an edge left
+//    over is a gap or an overlap);
 //  - every component within τ of its hull: its concavity measured afresh (measure_concavity, not
 //    the decomposition's bookkeeping), and geometrically every point of its boundary inside the
 //    hull and within τ of the hull's boundary;
