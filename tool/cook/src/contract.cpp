@@ -92,29 +92,9 @@ using detail::sliver_defect;
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
-// Twice the signed area of the ring, summed exactly but for a final rounding: each product
-// split into its rounded value and its error (fma), the terms added with Neumaier's compensation.
-// region_area's shoelace about a vertex rounds by far more than a billionth of a long thin
-// piece's area, a small difference of large products (stop 56: a strip 500,000 units long and
-// 0.001 wide, in triangles at --max-verts 3, summed 5.2e-7 off its 495, and exited 4).
-double accurate_twice_area(const Ring& ring) {
-  double sum = 0.0, compensation = 0.0;
-  auto add = [&](double x) {
-    const double t = sum + x;
-    compensation += std::abs(sum) >= std::abs(x) ? (sum - t) + x : (x - t) + sum;
-    sum = t;
-  };
-  for (std::size_t i = 0, n = ring.size(); i < n && n >= 3; ++i) {
-    const Vec2 a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
-    const double first = a.x * b.y, second = a.y * b.x;
-    add(first);
-    add(std::fma(a.x, b.y, -first));
-    add(-second);
-    add(-std::fma(a.y, b.x, -second));
-  }
-  return sum + compensation;
-}
-
+// region_area with accurate_twice_area's sums: the shoelace about a vertex rounds by far more
+// than a billionth of a long thin piece's area (stop 56: a strip 500,000 units long and 0.001
+// wide, in triangles at --max-verts 3, summed 5.2e-7 off its 495, and exited 4).
 double accurate_area(const Region& region) {
   double area = std::abs(accurate_twice_area(region.outer));
   for (const Ring& hole : region.holes) area -= std::abs(accurate_twice_area(hole));

@@ -52,6 +52,30 @@ double orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
   return 0.0;
 }
 
+}  // namespace
+
+double accurate_twice_area(const Ring& ring) {
+  double sum = 0.0, carried = 0.0;  // the rounded sum, and the errors its additions left out
+  auto add = [&](double x) {
+    double error;
+    two_sum(sum, x, sum, error);
+    carried += error;
+  };
+  for (std::size_t i = 0, n = ring.size(); i < n && n >= 3; ++i) {
+    const Vec2 a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
+    double product, error;
+    two_product(a.x, b.y, product, error);
+    add(product);
+    add(error);
+    two_product(-a.y, b.x, product, error);
+    add(product);
+    add(error);
+  }
+  return sum + carried;
+}
+
+namespace {
+
 // Whether x - y rounded to difference is exact: two-sum's error is zero.
 inline bool difference_is_exact(double x, double y, double difference) {
   double sum, error;

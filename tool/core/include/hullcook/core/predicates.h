@@ -23,6 +23,12 @@ bool turns_left_somewhere(const Ring& ring);
 // back, turns left somewhere and winds once. What a reader may hold a convex hull as.
 bool is_weakly_convex(const Ring& ring);
 
+// Twice the signed area of ring [units²], summed exactly but for a final rounding: each product
+// of the shoelace split into its rounded value and its error, the terms added with their errors
+// carried (a compensated sum). A long thin ring's area is a small difference of large products,
+// which signed_area's plain sum rounds by far more than a billionth of it.
+double accurate_twice_area(const Ring& ring);
+
 // True when p lies on the closed segment ab (exact).
 bool on_segment(Vec2 a, Vec2 b, Vec2 p);
 
