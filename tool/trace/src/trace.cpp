@@ -44,6 +44,33 @@ struct MarchedBand {
   std::vector<int> bottom;  // the points on the pixel row below the band, by x + 1
 };
 
+// The links of a marching-squares cell by its case (corner k opaque: bit k), in the order the
+// edges leaving the opaque side come (ascending k); an unused entry has leaving = 4.
+struct CellLink {
+  unsigned leaving = 4, entering = 4;
+};
+constexpr std::array<std::array<CellLink, 2>, 16> cell_links() {
+  std::array<std::array<CellLink, 2>, 16> links{};
+  for (unsigned corners = 0; corners < 16; ++corners) {
+    auto opaque = [&](unsigned k) { return (corners >> (k % 4) & 1u) != 0; };
+    unsigned count = 0;
+    for (unsigned k = 0; k < 4; ++k) {
+      if (!(opaque(k) && !opaque(k + 1))) continue;
+      for (unsigned step = 1; step < 4; ++step) {
+        const unsigned e = (k + step) % 4;
+        if (!opaque(e) && opaque(e + 1)) {
+          links[corners][count].leaving = k;
+          links[corners][count].entering = e;
+          ++count;
+          break;
+        }
+      }
+    }
+  }
+  return links;
+}
+constexpr std::array<std::array<CellLink, 2>, 16> kCellLinks = cell_links();
+
 // Marches cell rows [first_row, end_row) (cell row y has pixel rows y and y + 1 at its corners).
 MarchedBand march_band(const AlphaImage& image, int threshold, int first_row, int end_row) {
   const int width = image.width, height = image.height;
@@ -105,34 +132,34 @@ MarchedBand march_band(const AlphaImage& image, int threshold, int first_row, in
     return static_cast<int>(points.size()) - 1;
   };
 
-  auto cell = [&](int x, int y) {
-    const std::size_t i = static_cast<std::size_t>(x + 1);
-    const std::array<bool, 4> opaque{upper[i] != 0, upper[i + 1] != 0, lower[i + 1] != 0,
-                                     lower[i] != 0};
-    std::array<int*, 4> slots{&top[x + 1], &vertical[x + 2], &bottom[x + 1], &vertical[x + 1]};
-    const std::array<int, 4> firsts{top_first, row_first, row_first, row_first};
-    const std::array<std::array<int, 4>, 4> ends{
-        {{x, y, x + 1, y}, {x + 1, y, x + 1, y + 1}, {x, y + 1, x + 1, y + 1}, {x, y, x, y + 1}}};
-    auto point_on = [&](int k) {
-      if (*slots[k] < firsts[k])
-        *slots[k] = crossing(ends[k][0], ends[k][1], ends[k][2], ends[k][3]);
-      return *slots[k];
+  // A cell's corners c0..c3 (see march) as bits 0..3 of its case. Each edge e_k leaving the
+  // opaque side (c_k opaque, c_k+1 not) is joined to the first edge after it entering that side.
+  auto cell = [&](int x, int y, unsigned corners) {
+    auto point_on = [&](unsigned k) {
+      switch (k) {
+        case 0:
+          if (top[x + 1] < top_first) top[x + 1] = crossing(x, y, x + 1, y);
+          return top[x + 1];
+        case 1:
+          if (vertical[x + 2] < row_first) vertical[x + 2] = crossing(x + 1, y, x + 1, y + 1);
+          return vertical[x + 2];
+        case 2:
+          if (bottom[x + 1] < row_first) bottom[x + 1] = crossing(x, y + 1, x + 1, y + 1);
+          return bottom[x + 1];
+        default:
+          if (vertical[x + 1] < row_first) vertical[x + 1] = crossing(x, y, x, y + 1);
+          return vertical[x + 1];
+      }
     };
-    for (int k = 0; k < 4; ++k) {
-      if (!(opaque[k] && !opaque[(k + 1) % 4])) continue;  // e_k leaves the opaque side
-      for (int step = 1; step < 4; ++step) {
-        int e = (k + step) % 4;
-        if (!opaque[e] && opaque[(e + 1) % 4]) {  // e enters the opaque side
-          // The entering edge's point is made first (the order the points are numbered in).
-          const int to = point_on(e);
-          const int from = point_on(k);
-          if (from >= 0) {
-            next[from] = to;
-          } else {
-            band.next_of_above.emplace_back(from, to);
-          }
-          break;
-        }
+    for (const CellLink& link : kCellLinks[corners]) {
+      if (link.leaving > 3) break;
+      // The entering edge's point is made first (the order the points are numbered in).
+      const int to = point_on(link.entering);
+      const int from = point_on(link.leaving);
+      if (from >= 0) {
+        next[from] = to;
+      } else {
+        band.next_of_above.emplace_back(from, to);
       }
     }
   };
@@ -151,8 +178,9 @@ MarchedBand march_band(const AlphaImage& image, int threshold, int first_row, in
         continue;
       }
       for (const int end = std::min(i + 8, width + 1); i < end; ++i) {
-        const int corners = upper[i] + upper[i + 1] + lower[i] + lower[i + 1];
-        if (corners != 0 && corners != 4) cell(i - 1, y);
+        const unsigned corners = unsigned(upper[i]) | unsigned(upper[i + 1]) << 1 |
+                                 unsigned(lower[i + 1]) << 2 | unsigned(lower[i]) << 3;
+        if (corners != 0 && corners != 15) cell(i - 1, y, corners);
       }
     }
     std::swap(top, bottom);
