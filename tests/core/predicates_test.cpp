@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -154,6 +155,15 @@ TEST(Predicates, SegmentIntersection) {
   EXPECT_FALSE(segments_intersect({0, 0}, {1, 1}, {0, 1e-300}, {1, 1 + 1e-15}));
   EXPECT_TRUE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, 0.6}));
   EXPECT_FALSE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, std::nextafter(0.6, 1.0)}));
+  // A segment's ends (answered without the orientation), a point segment, and -0 against 0.
+  const Vec2 a{1e15 + 1, -3e-300}, b{-7.25, 1e-310};
+  EXPECT_TRUE(on_segment(a, b, a));
+  EXPECT_TRUE(on_segment(a, b, b));
+  EXPECT_TRUE(on_segment(b, b, b));
+  EXPECT_FALSE(on_segment(b, b, a));
+  EXPECT_TRUE(on_segment({0.0, 1.0}, {2.0, 3.0}, {-0.0, 1.0}));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(on_segment({nan, 0.0}, {1.0, 1.0}, {nan, 0.0}));
 }
 
 // What a reader may hold a convex hull as (stop 48: the .hcb writer's test of the runtime's
