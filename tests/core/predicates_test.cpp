@@ -155,7 +155,7 @@ TEST(Predicates, SegmentIntersection) {
   EXPECT_FALSE(segments_intersect({0, 0}, {1, 1}, {0, 1e-300}, {1, 1 + 1e-15}));
   EXPECT_TRUE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, 0.6}));
   EXPECT_FALSE(on_segment({0.1, 0.2}, {0.7, 1.4}, {0.3, std::nextafter(0.6, 1.0)}));
-  // A segment's ends (answered without the orientation), a point segment, and -0 against 0.
+  // A segment's ends, a point segment, -0 against 0, and NaN.
   const Vec2 a{1e15 + 1, -3e-300}, b{-7.25, 1e-310};
   EXPECT_TRUE(on_segment(a, b, a));
   EXPECT_TRUE(on_segment(a, b, b));
