@@ -28,6 +28,70 @@ TEST(Geometry, SignedAreaAndLocation) {
   EXPECT_DOUBLE_EQ(point_segment_distance({-3, 4}, {0, 0}, {2, 0}), 5.0);
 }
 
+// The many-holes check (stop 57: 180,000 holes of a checkerboard took 20 s to locate) answers as
+// locate_point does, for points inside, outside, on edges and vertices, above and below the
+// ring, and NaN; on a star, a staircase, and a comb whose teeth span every band (a plain scan).
+TEST(Geometry, Stop57_RingLocatorAnswersAsLocatePoint) {
+  std::mt19937_64 random(57);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Ring> rings;
+  for (int n : {16, 100, 3000}) {
+    Ring star;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2.0 * M_PI * i / n, radius = 50.0 + 50.0 * unit(random);
+      star.push_back({radius * std::cos(angle), radius * std::sin(angle)});
+    }
+    rings.push_back(star);
+  }
+  Ring staircase{{0, 0}};
+  for (int step = 0; step < 500; ++step) {
+    staircase.push_back({step + 1.0, step + 0.0});
+    staircase.push_back({step + 1.0, step + 1.0});
+  }
+  staircase.push_back({0, 500});
+  rings.push_back(staircase);
+  Ring comb;
+  for (int tooth = 0; tooth < 300; ++tooth) {
+    comb.push_back({2.0 * tooth, 1000.0});
+    comb.push_back({2.0 * tooth + 1.0, 1000.0});
+    comb.push_back({2.0 * tooth + 1.0, 1.0});
+    comb.push_back({2.0 * tooth + 2.0, 1.0});
+  }
+  comb.push_back({600, 0});
+  comb.push_back({0, 0});
+  rings.push_back(comb);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::size_t inside = 0, boundary = 0;
+  for (const Ring& ring : rings) {
+    const RingLocator locator(ring);
+    double low_x = ring[0].x, high_x = low_x, low_y = ring[0].y, high_y = low_y;
+    for (Vec2 v : ring) {
+      low_x = std::min(low_x, v.x), high_x = std::max(high_x, v.x);
+      low_y = std::min(low_y, v.y), high_y = std::max(high_y, v.y);
+    }
+    std::vector<Vec2> points{{nan, 0.0}, {0.0, nan}, {0.0, low_y - 1}, {0.0, high_y + 1}};
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+      points.push_back(a);
+      points.push_back((a + b) * 0.5);
+      points.push_back({a.x - 1e-9, a.y});
+    }
+    for (int k = 0; k < 20000; ++k) {
+      points.push_back({low_x - 1 + (high_x - low_x + 2) * unit(random),
+                        low_y - 1 + (high_y - low_y + 2) * unit(random)});
+    }
+    for (Vec2 p : points) {
+      const Location expected = locate_point(ring, p);
+      ASSERT_EQ(locator.locate(p), expected)
+          << p.x << ", " << p.y << " in a ring of " << ring.size();
+      inside += expected == Location::inside;
+      boundary += expected == Location::boundary;
+    }
+  }
+  EXPECT_GT(inside, 10000u);
+  EXPECT_GT(boundary, 1000u);
+}
+
 // Distance searches keep the least square and take one square root (issue 17): that must be the
 // least of the distances to the last bit, at every scale and for degenerate segments.
 TEST(Geometry, Issue17_LeastSquaredDistanceGivesTheLeastDistanceExactly) {

@@ -122,6 +122,26 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("nested.poly", "3\n" + square + "4 in\n1 1\n8 1\n8 8\n1 8\n1 2 3 4\n" +
                                           "3 in\n2 2\n3 2\n3 3\n1 2 3\n"),
               AllOf(HasSubstr("holes 1 and 2"), HasSubstr("overlap")));
+  // Stop 57: the holes' boxes are paired by a sweep, and the first overlapping pair by index is
+  // named, among 400 holes (the outer ring's locator and the sweep both at work).
+  {
+    std::string many = "403\n" + square;
+    for (int row = 0; row < 20; ++row) {
+      for (int column = 0; column < 20; ++column) {
+        const double x = 0.2 + 0.45 * column, y = 0.2 + 0.45 * row;
+        many += "4 in\n" + std::to_string(x) + " " + std::to_string(y) + "\n" +
+                std::to_string(x + 0.2) + " " + std::to_string(y) + "\n" + std::to_string(x + 0.2) +
+                " " + std::to_string(y + 0.2) + "\n" + std::to_string(x) + " " +
+                std::to_string(y + 0.2) + "\n1 2 3 4\n";
+      }
+    }
+    // Hole 401 inside hole 399 (row 19, column 18), and hole 402 inside hole 24 (row 1, column
+    // 3): the pair named is (24, 402), the first by index.
+    many += "3 in\n8.35 8.8\n8.4 8.8\n8.4 8.85\n1 2 3\n";
+    many += "3 in\n1.6 0.7\n1.65 0.7\n1.65 0.75\n1 2 3\n";
+    EXPECT_THAT(error_of("many.poly", many),
+                AllOf(HasSubstr("many.poly"), HasSubstr("holes 24 and 402"), HasSubstr("overlap")));
+  }
   EXPECT_THAT(error_of("holeself.poly", "2\n" + square + "4 in\n1 1\n3 3\n3 1\n1 3\n1 2 3 4\n"),
               AllOf(HasSubstr("region 1 hole 1"), HasSubstr("self-intersection")));
   EXPECT_THAT(error_of("truncated.poly", "1\n4 out\n0 0\n10 0\n10 10\n"),

@@ -278,6 +278,30 @@ Box box_of(const Ring& ring) {
   return box;
 }
 
+// The pairs (a, b), a < b, of boxes that overlap, ascending: a sweep over the boxes sorted by
+// their least x, O(n log n) plus the pairs.
+std::vector<std::pair<std::size_t, std::size_t>> overlapping_box_pairs(
+    const std::vector<Box>& boxes) {
+  std::vector<std::size_t> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    return boxes[i].min_x != boxes[j].min_x ? boxes[i].min_x < boxes[j].min_x : i < j;
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Box& box = boxes[order[k]];
+    for (std::size_t l = k + 1; l < order.size() && boxes[order[l]].min_x <= box.max_x; ++l) {
+      if (!box.overlaps(boxes[order[l]])) continue;
+      pairs.emplace_back(std::min(order[k], order[l]), std::max(order[k], order[l]));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// Above this many holes, their first vertices are located in the outer ring by a RingLocator.
+constexpr std::size_t kHolesWorthALocator = 16;
+
 constexpr double kLargestCoordinate = 1e150;
 // Below it the orientation predicates' products of coordinate differences reach the subnormal
 // range, where their exact error terms round away: a ring that small decomposed into different,
@@ -396,21 +420,25 @@ std::vector<Region> clean_and_validate(std::vector<Region> regions, std::string_
         }
         // No boundaries meet, so one vertex decides containment.
         std::vector<Box> boxes;
+        // Locating 180,000 holes' first vertices in a checkerboard's outer ring of 4,800 edges
+        // by scans of the whole ring took 20 s.
+        std::optional<RingLocator> outer;
+        if (region.holes.size() > kHolesWorthALocator) outer.emplace(region.outer);
         for (std::size_t h = 0; h < region.holes.size(); ++h) {
           const Ring& hole = region.holes[h];
-          if (locate_point(region.outer, hole[0]) != Location::inside) {
+          if ((outer ? outer->locate(hole[0]) : locate_point(region.outer, hole[0])) !=
+              Location::inside) {
             fail(ring_name(static_cast<int>(h + 1)) + " is outside the outer boundary");
           }
           boxes.push_back(box_of(hole));
         }
-        for (std::size_t a = 0; a < region.holes.size(); ++a) {
-          for (std::size_t b = a + 1; b < region.holes.size(); ++b) {
-            if (!boxes[a].overlaps(boxes[b])) continue;
-            if (locate_point(region.holes[b], region.holes[a][0]) == Location::inside ||
-                locate_point(region.holes[a], region.holes[b][0]) == Location::inside) {
-              fail(region_name + ": holes " + std::to_string(a + 1) + " and " +
-                   std::to_string(b + 1) + " overlap");
-            }
+        // The pairs whose boxes overlap, found by a sweep in x (every pair's boxes took 30 s on
+        // an image of 180,000 holes), then tested in index order: the pair named is the first.
+        for (const auto& [a, b] : overlapping_box_pairs(boxes)) {
+          if (locate_point(region.holes[b], region.holes[a][0]) == Location::inside ||
+              locate_point(region.holes[a], region.holes[b][0]) == Location::inside) {
+            fail(region_name + ": holes " + std::to_string(a + 1) + " and " +
+                 std::to_string(b + 1) + " overlap");
           }
         }
       },

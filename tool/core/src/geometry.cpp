@@ -310,18 +310,99 @@ int ring_orientation(const Ring& ring) {
   return orientation(ring[(lowest + n - 1) % n], ring[lowest], ring[(lowest + 1) % n]);
 }
 
+namespace {
+
+// Whether edge a-b decides p's location (on it: the boundary), or flips the crossing count of a
+// ray from p towards +x (half-open rule on y; the side test is exact).
+enum class EdgeVerdict { none, boundary, crosses };
+EdgeVerdict edge_verdict(Vec2 a, Vec2 b, Vec2 p) {
+  if (on_segment(a, b, p)) return EdgeVerdict::boundary;
+  if ((a.y > p.y) != (b.y > p.y)) {
+    const double side = detail::fast_orient2d(a, b, p);
+    if ((b.y > a.y) ? side > 0.0 : side < 0.0) return EdgeVerdict::crosses;
+  }
+  return EdgeVerdict::none;
+}
+
+}  // namespace
+
 Location locate_point(const Ring& ring, Vec2 p) {
   bool inside = false;
   const std::size_t n = ring.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Vec2 a = ring[j];
-    const Vec2 b = ring[i];
-    if (on_segment(a, b, p)) return Location::boundary;
-    // Half-open rule on y; the side test is exact.
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double side = detail::fast_orient2d(a, b, p);
-      if ((b.y > a.y) ? side > 0.0 : side < 0.0) inside = !inside;
+    const EdgeVerdict verdict = edge_verdict(ring[j], ring[i], p);
+    if (verdict == EdgeVerdict::boundary) return Location::boundary;
+    inside ^= verdict == EdgeVerdict::crosses;
+  }
+  return inside ? Location::inside : Location::outside;
+}
+
+namespace {
+
+// Edges filed per band, at most this many times the edge count (a comb's teeth span every band).
+constexpr std::size_t kFilingsPerEdge = 8;
+
+}  // namespace
+
+RingLocator::RingLocator(const Ring& ring) : ring_(ring) {
+  const std::size_t n = ring.size();
+  if (n < 16 || n > std::numeric_limits<std::uint32_t>::max()) return;
+  double high_y = -std::numeric_limits<double>::infinity();
+  low_y_ = std::numeric_limits<double>::infinity();
+  for (Vec2 v : ring) low_y_ = std::min(low_y_, v.y), high_y = std::max(high_y, v.y);
+  if (!(std::isfinite(low_y_) && std::isfinite(high_y) && high_y > low_y_)) return;
+  // Calls file(band, edge) for each band each edge's y range meets.
+  auto each_filing = [&](auto&& file) {
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+      const std::size_t last = band_of(std::max(ring[i].y, ring[j].y));
+      for (std::size_t b = band_of(std::min(ring[i].y, ring[j].y)); b <= last; ++b) file(b, i);
     }
+  };
+  // Fewer, taller bands while the edges' filings exceed their budget.
+  for (std::size_t bands = n; bands >= 4; bands /= 4) {
+    band_height_ = (high_y - low_y_) / static_cast<double>(bands);
+    if (!(band_height_ > 0.0) || !std::isfinite(band_height_)) break;
+    bands_ = bands;
+    std::size_t filings = 0;
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+      filings +=
+          band_of(std::max(ring[i].y, ring[j].y)) - band_of(std::min(ring[i].y, ring[j].y)) + 1;
+    }
+    if (filings <= kFilingsPerEdge * n) {
+      band_start_.assign(bands + 1, 0);
+      each_filing([&](std::size_t b, std::size_t) { ++band_start_[b + 1]; });
+      for (std::size_t b = 1; b <= bands; ++b) band_start_[b] += band_start_[b - 1];
+      edges_.resize(filings);
+      std::vector<std::size_t> next(band_start_.begin(), band_start_.end() - 1);
+      each_filing(
+          [&](std::size_t b, std::size_t i) { edges_[next[b]++] = static_cast<std::uint32_t>(i); });
+      return;
+    }
+  }
+  bands_ = 0;  // a plain scan
+}
+
+// Monotone in y (a difference, a division by a positive constant and a floor, each monotone):
+// an edge whose y range holds p.y is filed in p.y's band.
+std::size_t RingLocator::band_of(double y) const {
+  const double band = std::floor((y - low_y_) / band_height_);
+  if (!(band > 0.0)) return 0;
+  return std::min(static_cast<std::size_t>(std::min(band, 1e18)), bands_ - 1);
+}
+
+Location RingLocator::locate(Vec2 p) const {
+  if (bands_ == 0) return locate_point(ring_, p);
+  // Only an edge whose closed y range holds p.y can hold p or flip the count, and it is filed in
+  // p.y's band; a p above or below every vertex (or NaN) meets none and is outside, as
+  // locate_point finds it.
+  const std::size_t n = ring_.size();
+  const std::size_t band = band_of(p.y);
+  bool inside = false;
+  for (std::size_t k = band_start_[band]; k < band_start_[band + 1]; ++k) {
+    const std::size_t i = edges_[k];
+    const EdgeVerdict verdict = edge_verdict(ring_[i == 0 ? n - 1 : i - 1], ring_[i], p);
+    if (verdict == EdgeVerdict::boundary) return Location::boundary;
+    inside ^= verdict == EdgeVerdict::crosses;
   }
   return inside ? Location::inside : Location::outside;
 }

@@ -4,6 +4,7 @@
 #include "hullcook/core/polygon.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace hullcook {
@@ -47,6 +48,24 @@ enum class Location { outside, boundary, inside };
 
 // Where p lies with respect to the closed ring (either orientation), exactly.
 Location locate_point(const Ring& ring, Vec2 p);
+
+// locate_point for many points in one ring: the same answers, looking only at the edges whose
+// y range holds the point's y (filed by horizontal bands). For a ring of n edges it costs O(n)
+// to build (edges filed at most 8n times, else in fewer bands, or a plain scan). It refers to the
+// ring, which must outlive it unchanged.
+class RingLocator {
+ public:
+  explicit RingLocator(const Ring& ring);
+  Location locate(Vec2 p) const;
+
+ private:
+  std::size_t band_of(double y) const;
+  const Ring& ring_;
+  double low_y_ = 0.0, band_height_ = 0.0;
+  std::size_t bands_ = 0;                // 0: a plain scan of the ring
+  std::vector<std::size_t> band_start_;  // edges_[band_start_[b] .. band_start_[b + 1]): band b's
+  std::vector<std::uint32_t> edges_;     // edge i runs from vertex i - 1 (cyclic) to vertex i
+};
 
 // Where p lies with respect to the region: inside the outer ring and outside every hole.
 Location locate_point(const Region& region, Vec2 p);
