@@ -9,6 +9,7 @@
 #include "hullcook/core/error.h"
 #include "hullcook/core/geometry.h"
 #include "hullcook/core/poly_io.h"
+#include "hullcook/core/predicates.h"
 
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
@@ -721,6 +722,39 @@ TEST(Contract, Stop56_LongThinPiecesAreasAreSummedAccurately) {
     }
   }
   EXPECT_EQ(strips, 15);
+}
+
+// A region's rings are summed in one sum (stop 57: a unit square less a hole 1e-8 inside it,
+// valid input, decomposed into 4 pieces of the region's own vertices, summed 5.5e-17 off its 4e-8
+// with each ring summed apart, and exited 4), in either orientation of its rings.
+TEST(Contract, Stop57_AFramesAreaIsItsRingsInOneSum) {
+  for (double wall : {1e-8, 3e-9, 2.1e-8}) {
+    const double in = wall, out = 1.0 - wall;
+    const Ring outer{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+        hole{{in, in}, {in, out}, {out, out}, {out, in}};
+    const Region frame{outer, {hole}};
+    // The frame's four trapezoids, each along one side.
+    const std::vector<Ring> sides{{{0, 0}, {1, 0}, {out, in}, {in, in}},
+                                  {{1, 0}, {1, 1}, {out, out}, {out, in}},
+                                  {{1, 1}, {0, 1}, {in, out}, {out, out}},
+                                  {{0, 1}, {0, 0}, {in, in}, {in, out}}};
+    std::vector<CookedPiece> pieces;
+    for (const Ring& side : sides) pieces.push_back(CookedPiece{Region{side, {}}, side, 0.0});
+    for (const Region& outline :
+         {frame, Region{Ring(outer.rbegin(), outer.rend()), {Ring(hole.rbegin(), hole.rend())}}}) {
+      const std::vector<std::string> violations =
+          find_contract_violations(pieces, {outline}, {0.5, Measure::h1, kLimits});
+      EXPECT_FALSE(says(violations, "areas")) << wall << listed(violations);
+      // 2 - 2 (out - in)² of the doubles in and out, in quadruple precision.
+      const __float128 side = static_cast<__float128>(out) - static_cast<__float128>(in);
+      EXPECT_NEAR(accurate_twice_area(outline), static_cast<double>(2 - 2 * side * side), 1e-22)
+          << wall;
+    }
+    // A side missing: the areas do not add up.
+    EXPECT_TRUE(says(find_contract_violations({pieces[0], pieces[1], pieces[2]}, {frame},
+                                              {0.5, Measure::h1, kLimits}),
+                     "areas"));
+  }
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ bool is_weakly_convex(const Ring& ring);
 // which signed_area's plain sum rounds by far more than a billionth of it.
 double accurate_twice_area(const Ring& ring);
 
+// Twice the region's area [units²] (its outer ring's, less its holes', whichever their
+// orientations), summed the same way in one sum.
+double accurate_twice_area(const Region& region);
+
 // True when p lies on the closed segment ab (exact).
 bool on_segment(Vec2 a, Vec2 b, Vec2 p);
 
