@@ -491,6 +491,36 @@ TEST_F(CookCli, Issue19FuzzSpikeThinnerThanTheContractAllowsIsBadInput) {
   expect_bad_input(write("spike.poly", text), "region 1 is too thin");
 }
 
+// Stop 57's sweep: an arc with a vertex 1e-9 along an edge after another, valid input whose notch
+// at τ 0 only a cut leaving a sliver resolves. cook refused it (exit 2); decompose exited 4 from
+// its contract. Both refuse it now, under every measure, and write nothing.
+TEST_F(CookCli, Stop57_ASliverOnlyACutLeavesIsBadInputForDecomposeToo) {
+  const std::string text =
+      "1\n7 out\n-0.9921147013772682 0.12533323256627782\n-1 1.2246467991473532e-16\n"
+      "-0.99999999993720945 -9.9802660596359178e-10\n-0.99211470131447765 "
+      "-0.12533323356430431\n-0.99211470112709632 -0.12533323454659157\n"
+      "-0.9685831611286313 -0.24868988716485463\n-0.062790519529313193 "
+      "-0.99802672842827167\n1 2 3 4 5 6 7\n";
+  const fs::path input = write("near_duplicate.poly", text);
+  const fs::path json = directory / "pieces.json";
+  for (const char* measure : {"sl", "sp", "h1", "h2"}) {
+    auto result = run_hullcook("decompose " + input.string() + " --tau 0 --measure " + measure +
+                               " --json " + json.string());
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+    EXPECT_NE(result.output.find(input.string() + ": a piece of "), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("is a sliver (thinner than the rounding of its coordinates) that "
+                                 "no cut avoided at tau = 0; raise --tau"),
+              std::string::npos)
+        << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    EXPECT_FALSE(fs::exists(json));
+  }
+  auto coarser = run_hullcook("decompose " + input.string() + " --tau 1e-12");
+  EXPECT_EQ(coarser.exit_code, 0) << coarser.output;
+  expect_bad_input(input, "no neighbour could take within tau = 0", "--tau 0");
+}
+
 // Issue 19's fuzzing: a hole vertex 1.2e-9 above the bottom edge of a 0.756 wide rectangle, a
 // wall thinner than twice its sliver width (see tests/cook/thin_wall_test.cpp): bad input, both
 // for decompose and for cook.

@@ -107,6 +107,9 @@ int run_decompose(const DecomposeOptions& options) {
     const std::vector<CookedPiece> region_pieces(
         asset.pieces.begin() + std::ptrdiff_t(first_piece[r]),
         asset.pieces.begin() + std::ptrdiff_t(first_piece[r + 1]));
+    // A sliver that only a cut resolving a notch left is bad input at that τ, as the cook
+    // refuses it (stop 57: a near-duplicate vertex 1e-9 along an edge, at --tau 0, exited 4).
+    refuse_sliver_pieces(region_pieces, {regions[r]}, level_tau[r], options.input);
     const ContractTerms terms{level_tau[r], *measure, EngineLimits{0, 0.0}};
     for (const std::string& violation :
          find_contract_violations(region_pieces, {regions[r]}, terms)) {

@@ -803,17 +803,17 @@ class Constrainer {
   // others: how many more pieces are thinner than the weld and unplaced, none thinner.
   [[noreturn]] void throw_unplaceable(const Slot& slot, std::string_view source,
                                       std::size_t others) const {
+    if (slot.is_sliver) {
+      std::ostringstream ending;
+      ending << " and no neighbour could take within tau = " << tau_
+             << "; raise --tau, or move the input nearer the origin";
+      throw InputError(sliver_piece_refusal(slot.piece.component, source) + ending.str());
+    }
     Box box(slot.piece.component.outer);
     std::ostringstream message;
     message << source << ": a piece of " << region_area(slot.piece.component)
             << " square units near (" << 0.5 * (box.low.x + box.high.x) << ", "
             << 0.5 * (box.low.y + box.high.y) << ")";
-    if (slot.is_sliver) {
-      message << " is a sliver (thinner than the rounding of its coordinates) that no cut "
-                 "avoided and no neighbour could take within tau = "
-              << tau_ << "; raise --tau, or move the input nearer the origin";
-      throw InputError(message.str());
-    }
     if (slot.splits_into_slivers) {
       // Its vertices lie so near a line that every split is thinner than the contract's
       // rounding (a side of 1e-7 bumps cut into triangles at --max-verts 3).

@@ -23,6 +23,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <tuple>
 
 namespace hullcook {
@@ -744,6 +745,27 @@ bool is_contract_sliver(const Region& region, double slack) {
   if (region.outer.empty()) return true;
   const double length = length_of(region.outer);
   return region_area(region) <= length * std::max(1e-9 * length, slack);
+}
+
+std::string sliver_piece_refusal(const Region& piece, std::string_view source) {
+  Vec2 low = piece.outer.empty() ? Vec2{0, 0} : piece.outer.front(), high = low;
+  for (Vec2 p : piece.outer) low = glm::min(low, p), high = glm::max(high, p);
+  std::ostringstream message;
+  message << source << ": a piece of " << region_area(piece) << " square units near ("
+          << 0.5 * (low.x + high.x) << ", " << 0.5 * (low.y + high.y)
+          << ") is a sliver (thinner than the rounding of its coordinates) that no cut avoided";
+  return message.str();
+}
+
+void refuse_sliver_pieces(const std::vector<CookedPiece>& pieces,
+                          const std::vector<Region>& outline, double tau, std::string_view source) {
+  const double slack = rounding_slack(outline);
+  for (const CookedPiece& piece : pieces) {
+    if (!is_contract_sliver(piece.component, slack)) continue;
+    std::ostringstream ending;
+    ending << " at tau = " << tau << "; raise --tau, or move the input nearer the origin";
+    throw InputError(sliver_piece_refusal(piece.component, source) + ending.str());
+  }
 }
 
 }  // namespace hullcook

@@ -8,6 +8,7 @@
 #include "hullcook/core/decompose.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hullcook {
@@ -63,6 +64,18 @@ double contract_slack(const std::vector<const Ring*>& rings);
 // Whether the contract calls region a sliver at that slack: its area no more than its length (the
 // diagonal of its outer ring's bounding box) times the larger of 1e-9 of that length and slack.
 bool is_contract_sliver(const Region& region, double slack);
+
+// "SOURCE: a piece of A square units near (x, y) is a sliver (thinner than the rounding of its
+// coordinates) that no cut avoided": the start of the refusal of a piece the decomposer could
+// only cut as a sliver, which each caller ends with what it tried and what the user can change.
+std::string sliver_piece_refusal(const Region& piece, std::string_view source);
+
+// Throws InputError (sliver_piece_refusal's, "at tau = T; raise --tau, or move the input nearer
+// the origin") for the first of the pieces of outline that the contract calls a sliver: the
+// decomposer cuts one only where no other cut resolves a notch deeper than the slivers are wide,
+// which at that τ is bad input (the cook merges such a piece into a neighbour where τ allows).
+void refuse_sliver_pieces(const std::vector<CookedPiece>& pieces,
+                          const std::vector<Region>& outline, double tau, std::string_view source);
 
 // Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
 // more)" when there are violations.
