@@ -491,6 +491,29 @@ TEST_F(CookCli, Issue19FuzzSpikeThinnerThanTheContractAllowsIsBadInput) {
   expect_bad_input(write("spike.poly", text), "region 1 is too thin");
 }
 
+// Stop 57's image sweep: a valid image 65,536 px wide cooks to glTF, and to .hcb, whose image
+// size is 16-bit, gets exit 3 naming the image, its size and what to do instead.
+TEST_F(CookCli, Stop57_AnImageWiderThanTheBundleHoldsIsToldWhatToDo) {
+  constexpr std::uint32_t kWide = 65536;
+  std::vector<std::uint8_t> pixels(std::size_t{kWide} * 2 * 4, 0);
+  for (std::uint32_t x = 100; x < 200; ++x) {
+    for (std::uint32_t y = 0; y < 2; ++y) pixels[(y * kWide + x) * 4 + 3] = 255;
+  }
+  const fs::path image = write("wide.png", test::make_png(kWide, 2, 6, pixels));
+  auto bundle =
+      run_hullcook("cook " + image.string() + " -q -o " + (directory / "wide.hcb").string());
+  EXPECT_EQ(bundle.exit_code, static_cast<int>(ExitCode::output_failed)) << bundle.output;
+  EXPECT_NE(bundle.output.find("its image (" + image.string() +
+                               ") is 65536 x 2 px, a side more than the bundle's 65535; cut it "
+                               "into cells with --grid, or write glTF (.glb)"),
+            std::string::npos)
+      << bundle.output;
+  EXPECT_FALSE(fs::exists(directory / "wide.hcb"));
+  auto gltf =
+      run_hullcook("cook " + image.string() + " -q -o " + (directory / "wide.glb").string());
+  EXPECT_EQ(gltf.exit_code, 0) << gltf.output;
+}
+
 // Stop 57's sweep: an arc with a vertex 1e-9 along an edge after another, valid input whose notch
 // at τ 0 only a cut leaving a sliver resolves. cook refused it (exit 2); decompose exited 4 from
 // its contract. Both refuse it now, under every measure, and write nothing.

@@ -359,6 +359,32 @@ TEST(TraceFormats, FaintImagesAndSpecksAreToldWithTheFigureThatDecides) {
               24);
 }
 
+// Stop 57's image sweep: libpng's default limit of a million pixels a side refused a valid
+// 1,000,001 x 1 image as "corrupt or unsupported PNG data (Invalid IHDR data)"; --max-pixels
+// bounds images instead. And a corrupt chunk's type reached the terminal as raw bytes (an escape
+// sequence among them): a byte that is not printable ASCII is shown as \xNN.
+TEST(TraceFormats, Stop57_AMillionPixelWideImageDecodesAndChunkTypesArePrintable) {
+  const auto dir = test::scratch_dir("trace_stop57");
+  constexpr int kWide = 1'000'001;
+  std::string row(std::size_t{kWide} * 4, '\0');
+  for (int x = 999'990; x < kWide; ++x) row[std::size_t(x) * 4 + 3] = '\xff';
+  write_bytes(dir / "wide.png", test::encode_png(kWide, 1, 8, 6, {row}));
+  const AlphaImage wide = load_alpha(dir / "wide.png", TraceSettings{});
+  EXPECT_EQ(wide.width, kWide);
+  EXPECT_EQ(wide.height, 1);
+  EXPECT_EQ(wide.alpha[999'989], 0);
+  EXPECT_EQ(wide.alpha[kWide - 1], 255);
+
+  std::string escaped =
+      test::encode_png(4, 4, 8, 6, std::vector<std::string>(4, std::string(16, 'a')));
+  // A chunk after IHDR (at byte 33) typed ESC [ 3 1, its checksum left as it was.
+  const std::string chunk = test::png_chunk("tEXt", "a");
+  escaped.insert(33, chunk);
+  escaped.replace(33 + 4, 4, "\x1b[31");
+  write_bytes(dir / "escape.png", escaped);
+  expect_refused(dir / "escape.png", "bad checksum in the \\x1b[31 chunk at byte 33");
+}
+
 TEST(TraceFormats, ImageFilesAreToldByExtension) {
   for (const char* name : {"a.png", "b.PNG", "c.tga", "d.bmp", "e.WebP"})
     EXPECT_TRUE(is_image_file(name));

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace hullcook {
@@ -35,8 +36,13 @@ void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& level
   if (asset.name.empty()) bundle_asset_error(asset, "empty name");
   if (asset.name.size() > 0xFFFF) bundle_asset_error(asset, "name longer than 65535 bytes");
   if (asset.image_width < 0 || asset.image_width > 0xFFFF || asset.image_height < 0 ||
-      asset.image_height > 0xFFFF)
-    bundle_asset_error(asset, "image side outside [0, 65535] px");
+      asset.image_height > 0xFFFF) {
+    bundle_asset_error(asset, "its image (" + asset.source + ") is " +
+                                  std::to_string(asset.image_width) + " x " +
+                                  std::to_string(asset.image_height) +
+                                  " px, a side more than the bundle's 65535; cut it into cells "
+                                  "with --grid, or write glTF (.glb), which has no such limit");
+  }
   if (!std::isfinite(asset.pixels_per_unit) || !(static_cast<float>(asset.pixels_per_unit) > 0) ||
       !std::isfinite(static_cast<float>(asset.pixels_per_unit)))
     bundle_asset_error(asset, "pixels per unit must be a positive, finite 32-bit float");

@@ -15,6 +15,21 @@
 namespace hullcook::image_detail {
 namespace {
 
+// A chunk's type as a message may show it: a byte that is not printable ASCII as \xNN (a corrupt
+// type's control characters and escape sequences reached the terminal).
+std::string printable_type(const std::string& type) {
+  std::string shown;
+  for (const unsigned char c : type) {
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      shown += static_cast<char>(c);
+    } else {
+      static const char kHex[] = "0123456789abcdef";
+      shown += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+    }
+  }
+  return shown;
+}
+
 // libpng prints its own errors to stderr, so the chunk structure and checksums are verified here
 // first, for a clear message; libpng then skips its own checksums.
 // Returns whether the file has a tRNS chunk.
@@ -25,7 +40,8 @@ bool check_png_chunks(const std::string& bytes, const std::string& name) {
     if (at + 12 > bytes.size()) {
       // Where the file ends inside a chunk's 12 bytes of framing, the chunk is named when its
       // type is there (a file cut in IEND's checksum lacks only the last bytes of the end).
-      const std::string type = at + 8 <= bytes.size() ? bytes.substr(at + 4, 4) : "";
+      const std::string type =
+          at + 8 <= bytes.size() ? printable_type(bytes.substr(at + 4, 4)) : "";
       fail(name, "truncated PNG (the file ends at byte " + std::to_string(bytes.size()) +
                      (type.empty() || at == bytes.size()
                           ? " before the IEND chunk)"
@@ -33,7 +49,7 @@ bool check_png_chunks(const std::string& bytes, const std::string& name) {
                                 (type == "IEND" ? ", the end of the image)" : ")")));
     }
     const std::uint64_t length = u32_be(bytes, at);
-    const std::string type = bytes.substr(at + 4, 4);
+    const std::string type = printable_type(bytes.substr(at + 4, 4));
     if (at + 12 + length > bytes.size()) {
       fail(name, "truncated PNG (the " + type + " chunk at byte " + std::to_string(at) +
                      " runs past the end of the file)");
@@ -91,6 +107,11 @@ class Reader {
     png_set_read_fn(png_, &input_, read_input);
     // check_png_chunks() verified every checksum.
     png_set_crc_action(png_, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+#ifdef PNG_SET_USER_LIMITS_SUPPORTED
+    // libpng's own limit of a million pixels a side refused a valid 1,000,001 x 1 image as
+    // corrupt; --max-pixels bounds the image instead (checked on the header, before decoding).
+    png_set_user_limits(png_, 0x7fffffff, 0x7fffffff);
+#endif
 #ifdef PNG_IGNORE_ADLER32
     // The image data's Adler-32 guards bytes the chunks' CRC-32 has just verified: computing it
     // was a quarter of decoding (82 of 318 M instructions on samples/sprites).
