@@ -383,6 +383,19 @@ TEST(TraceFormats, Stop57_AMillionPixelWideImageDecodesAndChunkTypesArePrintable
   escaped.replace(33 + 4, 4, "\x1b[31");
   write_bytes(dir / "escape.png", escaped);
   expect_refused(dir / "escape.png", "bad checksum in the \\x1b[31 chunk at byte 33");
+
+  // A header of 100000 x 100000 pixels over 4x4's image data, with --max-pixels raised past it:
+  // refused by the data's size (deflate packs at most 1032 bytes into one) before the 40 GB image
+  // is allocated (which filled 9.8 GB before libpng found the data short).
+  const std::string small =
+      test::encode_png(4, 4, 8, 6, std::vector<std::string>(4, std::string(16, 'a')));
+  write_bytes(dir / "claims_huge.png",
+              small.substr(0, 8) + test::png_ihdr(100000, 100000, 8, 6) + small.substr(33));
+  TraceSettings unbounded;
+  unbounded.max_pixels = 1'000'000'000'000'000;
+  expect_refused(dir / "claims_huge.png",
+                 "truncated PNG (its image data, 79 bytes, is too short for 100000x100000 pixels)",
+                 unbounded);
 }
 
 TEST(TraceFormats, ImageFilesAreToldByExtension) {

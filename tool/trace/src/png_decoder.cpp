@@ -8,6 +8,7 @@
 #include <zlib.h>
 
 #include <csetjmp>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -30,11 +31,16 @@ std::string printable_type(const std::string& type) {
   return shown;
 }
 
+// What check_png_chunks finds out on its way.
+struct ChunkSummary {
+  bool transparency = false;           // a tRNS chunk
+  std::uint64_t image_data_bytes = 0;  // the IDAT chunks' data, summed
+};
+
 // libpng prints its own errors to stderr, so the chunk structure and checksums are verified here
 // first, for a clear message; libpng then skips its own checksums.
-// Returns whether the file has a tRNS chunk.
-bool check_png_chunks(const std::string& bytes, const std::string& name) {
-  bool transparency = false;
+ChunkSummary check_png_chunks(const std::string& bytes, const std::string& name) {
+  ChunkSummary summary;
   std::size_t at = 8;
   while (true) {
     if (at + 12 > bytes.size()) {
@@ -60,8 +66,9 @@ bool check_png_chunks(const std::string& bytes, const std::string& name) {
       fail(name, "corrupt PNG (bad checksum in the " + type + " chunk at byte " +
                      std::to_string(at) + ")");
     }
-    transparency = transparency || type == "tRNS";
-    if (type == "IEND") return transparency;
+    summary.transparency = summary.transparency || type == "tRNS";
+    if (type == "IDAT") summary.image_data_bytes += length;
+    if (type == "IEND") return summary;
     at += 12 + length;
   }
 }
@@ -169,7 +176,8 @@ void alpha_of_raw_row(const png_byte* row, int width, int colour_type, int bit_d
 }  // namespace
 
 void decode_png(const std::string& bytes, PixelSink& sink) {
-  const bool has_transparency_chunk = check_png_chunks(bytes, sink.name());
+  const ChunkSummary chunks = check_png_chunks(bytes, sink.name());
+  const bool has_transparency_chunk = chunks.transparency;
   Reader reader(bytes, sink.name());
   png_structp png = reader.png();
   png_infop info = reader.info();
@@ -212,6 +220,21 @@ void decode_png(const std::string& bytes, PixelSink& sink) {
       break;
     default:
       layout = Layout{1, false};
+  }
+  // Deflate packs at most 1032 bytes into one (a 258-byte match in two bits): image data too
+  // short for the header's pixels, at their fewest bytes, is refused before the image is
+  // allocated (a 69-byte file claiming 100000 x 100000 pixels, with --max-pixels raised, filled
+  // 9.8 GB before libpng found its data short).
+  const int samples = colour_type == PNG_COLOR_TYPE_RGB_ALPHA    ? 4
+                      : colour_type == PNG_COLOR_TYPE_RGB        ? 3
+                      : colour_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                                                                 : 1;
+  const double fewest_bytes =
+      static_cast<double>(width) * static_cast<double>(height) * samples * bit_depth / 8.0;
+  if (fewest_bytes > 1032.0 * (static_cast<double>(chunks.image_data_bytes) + 1.0)) {
+    fail(sink.name(), "truncated PNG (its image data, " + std::to_string(chunks.image_data_bytes) +
+                          " bytes, is too short for " + std::to_string(width) + "x" +
+                          std::to_string(height) + " pixels)");
   }
   sink.start(static_cast<int>(width), static_cast<int>(height), layout);
   const int rows = static_cast<int>(height);
