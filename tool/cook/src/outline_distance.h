@@ -68,7 +68,7 @@ class OutlineDistance {
   template <typename Visit>
   void for_each_cell_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
   // Calls visit(edge index) once for each edge registered in a cell that may lie within radius
-  // of segment ab.
+  // of segment ab; a visit that returns bool stops the walk by returning false.
   template <typename Visit>
   void for_each_edge_near(Vec2 a, Vec2 b, double radius, Visit visit) const;
   // new_edges_within for one edge ab of grown, whose part inside known lies left of known's
