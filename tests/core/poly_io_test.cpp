@@ -122,8 +122,9 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
   EXPECT_THAT(error_of("nested.poly", "3\n" + square + "4 in\n1 1\n8 1\n8 8\n1 8\n1 2 3 4\n" +
                                           "3 in\n2 2\n3 2\n3 3\n1 2 3\n"),
               AllOf(HasSubstr("holes 1 and 2"), HasSubstr("overlap")));
-  // Stop 57: the holes' boxes are paired by a sweep, and the first overlapping pair by index is
-  // named, among 400 holes (the outer ring's locator and the sweep both at work).
+  // Stop 57: the holes' boxes are paired through a grid, and the first overlapping pair by index
+  // is named, among 400 holes (the outer ring's locator and the grid both at work), though a
+  // later pair lies first in x and in y.
   {
     std::string many = "403\n" + square;
     for (int row = 0; row < 20; ++row) {
@@ -135,12 +136,12 @@ TEST(PolyIo, RefusesBadInputNamingFileRingAndProblem) {
                 std::to_string(y + 0.2) + "\n1 2 3 4\n";
       }
     }
-    // Hole 401 inside hole 399 (row 19, column 18), and hole 402 inside hole 24 (row 1, column
-    // 3): the pair named is (24, 402), the first by index.
-    many += "3 in\n8.35 8.8\n8.4 8.8\n8.4 8.85\n1 2 3\n";
-    many += "3 in\n1.6 0.7\n1.65 0.7\n1.65 0.75\n1 2 3\n";
+    // Hole 401 inside hole 381 (row 19, column 0: at the least x), and hole 402 inside hole 20
+    // (row 0, column 19: at the least y): the pair named is (20, 402), the first by index.
+    many += "3 in\n0.25 8.8\n0.3 8.8\n0.3 8.85\n1 2 3\n";
+    many += "3 in\n8.8 0.25\n8.85 0.25\n8.85 0.3\n1 2 3\n";
     EXPECT_THAT(error_of("many.poly", many),
-                AllOf(HasSubstr("many.poly"), HasSubstr("holes 24 and 402"), HasSubstr("overlap")));
+                AllOf(HasSubstr("many.poly"), HasSubstr("holes 20 and 402"), HasSubstr("overlap")));
   }
   EXPECT_THAT(error_of("holeself.poly", "2\n" + square + "4 in\n1 1\n3 3\n3 1\n1 3\n1 2 3 4\n"),
               AllOf(HasSubstr("region 1 hole 1"), HasSubstr("self-intersection")));
