@@ -757,5 +757,26 @@ TEST(Contract, Stop57_AFramesAreaIsItsRingsInOneSum) {
   }
 }
 
+// The review of stop 57: one sum over a region's rings far from the origin carried its own
+// rounding, eps² times the products' size (a frame 1e-3 wide at (-1e6, -1e6), walls 1.05e-9: 4.9e-9
+// of its area off, over the contract's billionth); the carried errors are now summed compensated
+// too.
+TEST(Contract, Stop57_AFramesAreaFarFromTheOriginIsSummedToAFewUlps) {
+  for (const double offset : {-1e6, 1e5, 1e7}) {
+    for (const double side : {1e-3, 1e-5}) {
+      const double wall = side * 1.05e-6;
+      const double low = offset, high = offset + side, in_low = low + wall, in_high = high - wall;
+      const Region frame{
+          {{low, low}, {high, low}, {high, high}, {low, high}},
+          {{{in_low, in_low}, {in_low, in_high}, {in_high, in_high}, {in_high, in_low}}}};
+      // Twice the area of the doubles' squares, in quadruple precision.
+      const __float128 outer = static_cast<__float128>(high) - static_cast<__float128>(low);
+      const __float128 inner = static_cast<__float128>(in_high) - static_cast<__float128>(in_low);
+      const double exact = static_cast<double>(2 * (outer * outer - inner * inner));
+      EXPECT_NEAR(accurate_twice_area(frame), exact, 1e-12 * exact) << offset << " " << side;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -103,13 +104,20 @@ int run_decompose(const DecomposeOptions& options) {
   // Each region's pieces against that region, at the τ of their level.
   const auto contract_start = std::chrono::steady_clock::now();
   std::vector<std::string> violations;
+  std::exception_ptr refusal;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::vector<CookedPiece> region_pieces(
         asset.pieces.begin() + std::ptrdiff_t(first_piece[r]),
         asset.pieces.begin() + std::ptrdiff_t(first_piece[r + 1]));
     // A sliver that only a cut resolving a notch left is bad input at that τ, as the cook
-    // refuses it (stop 57: a near-duplicate vertex 1e-9 along an edge, at --tau 0, exited 4).
-    refuse_sliver_pieces(region_pieces, {regions[r]}, level_tau[r], options.input);
+    // refuses it (stop 57: a near-duplicate vertex 1e-9 along an edge, at --tau 0, exited 4);
+    // after every region's check, so that a real violation elsewhere is still told as one.
+    try {
+      refuse_sliver_pieces(region_pieces, {regions[r]}, level_tau[r], options.input);
+    } catch (const InputError&) {
+      if (!refusal) refusal = std::current_exception();
+      continue;
+    }
     const ContractTerms terms{level_tau[r], *measure, EngineLimits{0, 0.0}};
     for (const std::string& violation :
          find_contract_violations(region_pieces, {regions[r]}, terms)) {
@@ -121,6 +129,7 @@ int run_decompose(const DecomposeOptions& options) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contract_start)
           .count();
   enforce_contract(options.input, violations);
+  if (refusal) std::rethrow_exception(refusal);
 
   if (!options.json.empty()) write_file_atomically(options.json, debug_json({asset}));
   std::printf("%s: %s, max concavity %.6g, convexity %.6f, %.3f ms (tau %.6g, %s)\n",

@@ -56,13 +56,16 @@ double orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
 
 namespace {
 
-// A sum of terms with the errors of its additions carried (a compensated sum).
+// A sum of terms with the errors of its additions carried, and the errors of those additions
+// carried too (a compensated sum of the second order): the first order's own rounding, eps² times
+// the terms' size, was 4.9e-9 of a frame 1e-3 wide at (-1e6, -1e6) (stop 57's review).
 class CompensatedSum {
  public:
   void add(double x) {
-    double error;
+    double error, second;
     two_sum(sum_, x, sum_, error);
-    carried_ += error;
+    two_sum(carried_, error, carried_, second);
+    carried_twice_ += second;
   }
   // The shoelace's terms of ring, times sign (+1 or -1, exact), each product with its error.
   void add_twice_area(const Ring& ring, double sign) {
@@ -77,10 +80,10 @@ class CompensatedSum {
       add(error);
     }
   }
-  double value() const { return sum_ + carried_; }
+  double value() const { return sum_ + (carried_ + carried_twice_); }
 
  private:
-  double sum_ = 0.0, carried_ = 0.0;
+  double sum_ = 0.0, carried_ = 0.0, carried_twice_ = 0.0;
 };
 
 }  // namespace

@@ -50,9 +50,10 @@ enum class Location { outside, boundary, inside };
 Location locate_point(const Ring& ring, Vec2 p);
 
 // locate_point for many points in one ring: the same answers, looking only at the edges whose
-// y range holds the point's y (filed by horizontal bands). For a ring of n edges it costs O(n)
-// to build (edges filed at most 8n times, else in fewer bands, or a plain scan). It refers to the
-// ring, which must outlive it unchanged.
+// y range holds the point's y (filed by horizontal bands). For a ring of n edges it files edges
+// at most 8n times, in n bands or, where edges span more, in a quarter as many, and so on (the
+// filings counted again each time: O(n log n) at most), else keeps a plain scan. It refers to
+// the ring, which must outlive it unchanged.
 class RingLocator {
  public:
   explicit RingLocator(const Ring& ring);

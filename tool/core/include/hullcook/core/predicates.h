@@ -33,7 +33,7 @@ double accurate_twice_area(const Ring& ring);
 // orientations), summed the same way in one sum.
 double accurate_twice_area(const Region& region);
 
-// True when p lies on the closed segment ab (exact).
+// True when p lies on the closed segment ab (exact, for finite points).
 bool on_segment(Vec2 a, Vec2 b, Vec2 p);
 
 // True when the closed segments ab and cd share at least one point (exact).
