@@ -292,9 +292,9 @@ void for_each_overlapping_box_pair(const std::vector<Box>& boxes, Visit visit) {
   if (n < 2) return;
   Box bounds = boxes[0];
   for (const Box& box : boxes) {
-    bounds.min_x = std::min(bounds.min_x, box.min_x),
+    bounds.min_x = std::min(bounds.min_x, box.min_x);
     bounds.max_x = std::max(bounds.max_x, box.max_x);
-    bounds.min_y = std::min(bounds.min_y, box.min_y),
+    bounds.min_y = std::min(bounds.min_y, box.min_y);
     bounds.max_y = std::max(bounds.max_y, box.max_y);
   }
   const std::size_t side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
@@ -308,47 +308,39 @@ void for_each_overlapping_box_pair(const std::vector<Box>& boxes, Visit visit) {
   };
   struct Span {
     std::size_t x0, x1, y0, y1;
+    bool filed() const { return (x1 - x0 + 1) * (y1 - y0 + 1) <= kCellsPerBox; }
   };
   std::vector<Span> spans(n);
   std::vector<std::size_t> unfiled;  // the boxes of too many cells, ascending
-  std::vector<std::size_t> start(side * side + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    Span& span = spans[i];
-    span = {cell_of(boxes[i].min_x, bounds.min_x, width),
-            cell_of(boxes[i].max_x, bounds.min_x, width),
-            cell_of(boxes[i].min_y, bounds.min_y, height),
-            cell_of(boxes[i].max_y, bounds.min_y, height)};
-    if ((span.x1 - span.x0 + 1) * (span.y1 - span.y0 + 1) > kCellsPerBox) {
-      unfiled.push_back(i);
-      continue;
-    }
-    for (std::size_t y = span.y0; y <= span.y1; ++y) {
-      for (std::size_t x = span.x0; x <= span.x1; ++x) ++start[y * side + x + 1];
-    }
+    spans[i] = {cell_of(boxes[i].min_x, bounds.min_x, width),
+                cell_of(boxes[i].max_x, bounds.min_x, width),
+                cell_of(boxes[i].min_y, bounds.min_y, height),
+                cell_of(boxes[i].max_y, bounds.min_y, height)};
+    if (!spans[i].filed()) unfiled.push_back(i);
   }
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<std::size_t> filed(start.back());
-  {
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  Buckets<std::size_t> cells;
+  cells.build(side * side, [&](auto&& add) {
     for (std::size_t i = 0; i < n; ++i) {
       const Span& span = spans[i];
-      if ((span.x1 - span.x0 + 1) * (span.y1 - span.y0 + 1) > kCellsPerBox) continue;
+      if (!span.filed()) continue;
       for (std::size_t y = span.y0; y <= span.y1; ++y) {
-        for (std::size_t x = span.x0; x <= span.x1; ++x) filed[next[y * side + x]++] = i;
+        for (std::size_t x = span.x0; x <= span.x1; ++x) add(y * side + x, i);
       }
     }
-  }
+  });
   std::vector<std::size_t> partners;
   for (std::size_t a = 0; a < n; ++a) {
     partners.clear();
     const Span& span = spans[a];
-    if ((span.x1 - span.x0 + 1) * (span.y1 - span.y0 + 1) > kCellsPerBox) {
+    if (!span.filed()) {
       for (std::size_t b = a + 1; b < n; ++b) partners.push_back(b);
     } else {
       for (std::size_t y = span.y0; y <= span.y1; ++y) {
         for (std::size_t x = span.x0; x <= span.x1; ++x) {
-          for (std::size_t k = start[y * side + x]; k < start[y * side + x + 1]; ++k) {
-            if (filed[k] > a) partners.push_back(filed[k]);
+          for (const std::size_t* b = cells.begin(y * side + x); b != cells.end(y * side + x);
+               ++b) {
+            if (*b > a) partners.push_back(*b);
           }
         }
       }

@@ -351,13 +351,6 @@ RingLocator::RingLocator(const Ring& ring) : ring_(ring) {
   low_y_ = std::numeric_limits<double>::infinity();
   for (Vec2 v : ring) low_y_ = std::min(low_y_, v.y), high_y = std::max(high_y, v.y);
   if (!(std::isfinite(low_y_) && std::isfinite(high_y) && high_y > low_y_)) return;
-  // Calls file(band, edge) for each band each edge's y range meets.
-  auto each_filing = [&](auto&& file) {
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-      const std::size_t last = band_of(std::max(ring[i].y, ring[j].y));
-      for (std::size_t b = band_of(std::min(ring[i].y, ring[j].y)); b <= last; ++b) file(b, i);
-    }
-  };
   // Fewer, taller bands while the edges' filings exceed their budget.
   for (std::size_t bands = n; bands >= 4; bands /= 4) {
     band_height_ = (high_y - low_y_) / static_cast<double>(bands);
@@ -369,13 +362,14 @@ RingLocator::RingLocator(const Ring& ring) : ring_(ring) {
           band_of(std::max(ring[i].y, ring[j].y)) - band_of(std::min(ring[i].y, ring[j].y)) + 1;
     }
     if (filings <= kFilingsPerEdge * n) {
-      band_start_.assign(bands + 1, 0);
-      each_filing([&](std::size_t b, std::size_t) { ++band_start_[b + 1]; });
-      for (std::size_t b = 1; b <= bands; ++b) band_start_[b] += band_start_[b - 1];
-      edges_.resize(filings);
-      std::vector<std::size_t> next(band_start_.begin(), band_start_.end() - 1);
-      each_filing(
-          [&](std::size_t b, std::size_t i) { edges_[next[b]++] = static_cast<std::uint32_t>(i); });
+      edges_.build(bands, [&](auto&& add) {
+        for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+          const std::size_t last = band_of(std::max(ring[i].y, ring[j].y));
+          for (std::size_t b = band_of(std::min(ring[i].y, ring[j].y)); b <= last; ++b) {
+            add(b, static_cast<std::uint32_t>(i));
+          }
+        }
+      });
       return;
     }
   }
@@ -398,8 +392,8 @@ Location RingLocator::locate(Vec2 p) const {
   const std::size_t n = ring_.size();
   const std::size_t band = band_of(p.y);
   bool inside = false;
-  for (std::size_t k = band_start_[band]; k < band_start_[band + 1]; ++k) {
-    const std::size_t i = edges_[k];
+  for (const std::uint32_t* k = edges_.begin(band); k != edges_.end(band); ++k) {
+    const std::size_t i = *k;
     const EdgeVerdict verdict = edge_verdict(ring_[i == 0 ? n - 1 : i - 1], ring_[i], p);
     if (verdict == EdgeVerdict::boundary) return Location::boundary;
     inside ^= verdict == EdgeVerdict::crosses;

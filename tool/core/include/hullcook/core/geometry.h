@@ -1,6 +1,7 @@
 // Geometry utilities on rings and regions, built on the exact predicates.
 #pragma once
 
+#include "hullcook/core/buckets.h"
 #include "hullcook/core/polygon.h"
 
 #include <cstddef>
@@ -63,9 +64,8 @@ class RingLocator {
   std::size_t band_of(double y) const;
   const Ring& ring_;
   double low_y_ = 0.0, band_height_ = 0.0;
-  std::size_t bands_ = 0;                // 0: a plain scan of the ring
-  std::vector<std::size_t> band_start_;  // edges_[band_start_[b] .. band_start_[b + 1]): band b's
-  std::vector<std::uint32_t> edges_;     // edge i runs from vertex i - 1 (cyclic) to vertex i
+  std::size_t bands_ = 0;         // 0: a plain scan of the ring
+  Buckets<std::uint32_t> edges_;  // per band; edge i runs from vertex i - 1 (cyclic) to vertex i
 };
 
 // Where p lies with respect to the region: inside the outer ring and outside every hole.
