@@ -38,7 +38,7 @@ void expect_valid_regions(const std::vector<Region>& regions, const std::string&
       Vec2 previous = ring[(i + n - 1) % n], here = ring[i], next = ring[(i + 1) % n];
       Vec2 in = here - previous, out = next - here;
       ASSERT_NE(here, next) << name << ": repeated vertex";
-      ASSERT_GT(std::abs(test::cross(in, out)), 1e-12 * glm::length(in) * glm::length(out))
+      ASSERT_GT(std::abs(hullcook::cross(in, out)), 1e-12 * glm::length(in) * glm::length(out))
           << name << ": collinear vertex at (" << here.x << ", " << here.y << ")";
       edges.push_back({r, i, here, next});
     }

@@ -2,6 +2,7 @@
 // hand-written PNG encoder for the forms OpenCV cannot write (grey + alpha, palette + tRNS).
 #pragma once
 
+#include "hullcook/core/geometry.h"
 #include "hullcook/core/polygon.h"
 
 #include <glm/common.hpp>
@@ -87,8 +88,6 @@ inline std::vector<std::uint8_t> rasterize(const std::vector<Region>& regions, i
   }
   return image;
 }
-
-inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
 inline double ring_area(const Ring& ring) {
   double twice = 0;

@@ -17,8 +17,6 @@
 namespace hullcook {
 namespace {
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
 double perimeter(const Ring& ring) {
   double length = 0;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
@@ -46,8 +44,7 @@ bool union_surely_beyond(const CookedPiece& a, const CookedPiece& b, double boun
   const Ring hull = convex_hull(corners);
   const std::size_t m = hull.size();
   if (m < 3) return false;
-  double extent = 0;
-  for (Vec2 p : hull) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  const double extent = largest_coordinate(hull);
   const double beyond = bound + 1e-9 * (bound + extent);
   for (const Ring* ring : {&a.component.outer, &b.component.outer}) {
     for (Vec2 v : *ring) {

@@ -91,8 +91,6 @@ using detail::point;
 using detail::rounding_slack;
 using detail::sliver_defect;
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
 // region_area with accurate_twice_area's sums: the shoelace about a vertex rounds by far more
 // than a billionth of a long thin piece's area (stop 56: a strip 500,000 units long and 0.001
 // wide, in triangles at --max-verts 3, summed 5.2e-7 off its 495, and exited 4).

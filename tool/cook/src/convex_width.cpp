@@ -1,5 +1,6 @@
 #include "convex_width.h"
 
+#include "hullcook/core/geometry.h"
 #include "hullcook/core/predicates.h"
 
 #include <glm/common.hpp>
@@ -9,11 +10,6 @@
 #include <limits>
 
 namespace hullcook {
-namespace {
-
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
-}  // namespace
 
 double width_of_by_scan(const Ring& hull) {
   double width = std::numeric_limits<double>::infinity();

@@ -22,8 +22,6 @@ constexpr int kMaxCellsPerSide = 2048;
 // growth_within refuses a polygon whose proof needs more cells than this.
 constexpr int kCellBudget = 1 << 14;
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
 struct Interval {
   double low = kInfinity, high = -kInfinity;
   bool empty() const { return !(low <= high); }

@@ -33,8 +33,7 @@ std::vector<Ring> small_hulls(const Ring& ring, const EngineLimits& limits, doub
     double length = glm::length(edge);
     if (length > 0) directions.push_back(edge / length);
   }
-  double extent = 0;
-  for (Vec2 p : local) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+  const double extent = largest_coordinate(local);
   double size = limits.weld > 0 ? limits.weld_distance() * kWeldMargin
                                 : std::max(1e-9 * extent, std::numeric_limits<double>::min());
   const double turn =

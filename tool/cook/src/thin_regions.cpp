@@ -93,8 +93,7 @@ std::optional<std::string> thin_wall_defect(const Region& region, double slack) 
     for (const Corner& corner : corners) corner_points.push_back(corner.point);
     tree.emplace(corner_points);
   }
-  double largest = 0.0;
-  for (Vec2 p : corner_points) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  const double largest = largest_coordinate(corner_points);
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i) {

@@ -42,7 +42,6 @@ std::size_t rings_per_range(std::size_t rings, unsigned threads) {
 // crossing points of different edges), so this only catches real contacts and rounding.
 constexpr double kTouch = 1e-9;
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
 
 // Keeps the index of the largest distance, the first of equals, as comparing the distances

@@ -4,6 +4,8 @@
 #include "hullcook/core/buckets.h"
 #include "hullcook/core/polygon.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -70,6 +72,19 @@ class RingLocator {
 
 // Where p lies with respect to the region: inside the outer ring and outside every hole.
 Location locate_point(const Region& region, Vec2 p);
+
+// The cross product's z of a and b [units²]: twice the signed area of the triangle (0, a, b),
+// positive when b turns left of a. Rounded: a magnitude (a depth, an area); signs that decide
+// topology come from orient2d.
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// The largest absolute coordinate of the points [units], 0 for none: the scale that their
+// rounding errors are relative to.
+inline double largest_coordinate(const std::vector<Vec2>& points) {
+  double largest = 0.0;
+  for (Vec2 p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  return largest;
+}
 
 // Euclidean distance from p to the closed segment ab [units].
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
