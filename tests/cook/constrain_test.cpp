@@ -473,5 +473,26 @@ TEST(EngineLimits, Stop56_ASliverLongerThanTwiceTauGetsAFlatTriangle) {
   expect_pieces_contract(pieces, {Region{strip, {}}}, 0.5, limits);
 }
 
+// A helper's generated polygons (stop 58): an ellipse 2 long and 0.002 wide, thinner than the
+// weld, was refused at τ 0.01 with 48 vertices and more, though a box 0.005 high holds it within
+// τ. Every candidate ran out of cells: the proof searched the part of it beyond each of the
+// ellipse's hull edges, 48 strips each as long as the ellipse. It now proves the growth once.
+TEST(EngineLimits, Stop58_AnEllipseThinnerThanTheWeldIsGrownIntoOneHull) {
+  for (std::size_t vertices : {44u, 48u, 52u, 208u}) {
+    SCOPED_TRACE(std::to_string(vertices) + " vertices");
+    Ring ellipse;
+    for (std::size_t k = 0; k < vertices; ++k) {
+      const double angle = 2 * M_PI * double(k) / double(vertices);
+      ellipse.push_back({std::cos(angle), 1e-3 * std::sin(angle)});
+    }
+    const EngineLimits limits{8, 0.005};
+    std::vector<CookedPiece> pieces;
+    ASSERT_NO_THROW(pieces = apply_engine_limits({convex_piece_of(ellipse)}, 0.01, limits,
+                                                 decompose_at, "ellipse"));
+    ASSERT_EQ(pieces.size(), 1u);
+    expect_pieces_contract(pieces, {Region{ellipse, {}}}, 0.01, limits);
+  }
+}
+
 }  // namespace
 }  // namespace hullcook
