@@ -53,10 +53,12 @@ std::vector<std::uint8_t> opencv_alpha(const cv::Mat& mat,
 }
 
 // Checks one file: alpha without key (or the "no alpha channel" refusal), alpha with a colour key
-// taken from the image, and the RGBA colours.
-void expect_same_as_opencv(const std::string& name, const std::string& bytes) {
+// taken from the image, and the RGBA colours, against OpenCV's reading of as_read (by default the
+// file itself; for a form OpenCV read wrongly, the same pixels in a form it reads).
+void expect_same_as_opencv(const std::string& name, const std::string& bytes,
+                           const std::string& as_read = {}) {
   SCOPED_TRACE(name);
-  const cv::Mat reference = opencv_decode(bytes);
+  const cv::Mat reference = opencv_decode(as_read.empty() ? bytes : as_read);
   ASSERT_FALSE(reference.empty()) << "OpenCV cannot read the test file";
   const int channels = reference.channels();
   const bool has_alpha = channels == 4 || channels == 2;
@@ -390,18 +392,47 @@ TEST(DecodeOracle, EveryBmpFormAsOpenCV) {
   rle4 += std::string("\x03\x45", 2) + std::string("\x00\x00", 2);
   files.emplace_back("rle8.bmp", bmp(width, height, 8, 1, palette, rle8));
   files.emplace_back("rle4.bmp", bmp(width, height, 4, 2, palette.substr(0, 64), rle4));
-  // OS/2 header: 12 bytes, three-byte palette entries; OpenCV read these as grey.
-  const std::string os2_pixels = random_bytes(random, static_cast<std::size_t>(pitch(24)) * height);
-  files.emplace_back("os2_24.bmp", "BM" +
-                                       le(26 + static_cast<std::uint32_t>(os2_pixels.size()), 4) +
-                                       le(0, 4) + le(26, 4) + le(12, 4) + le(width, 2) +
-                                       le(height, 2) + le(1, 2) + le(24, 2) + os2_pixels);
-  const std::string os2_palette = random_bytes(random, 3 * 256);
-  const std::string os2_indices = random_bytes(random, static_cast<std::size_t>(pitch(8)) * height);
-  files.emplace_back("os2_8.bmp", "BM" + le(0, 4) + le(0, 4) + le(26 + 768, 4) + le(12, 4) +
-                                      le(width, 2) + le(height, 2) + le(1, 2) + le(8, 2) +
-                                      os2_palette + os2_indices);
   for (const auto& [name, bytes] : files) expect_same_as_opencv(name, bytes);
+}
+
+// Stop 58, a helper's sweep of real sprites: OpenCV read OS/2 BMPs (12-byte header, three-byte
+// palette entries) as grey, so a --color-key keyed nothing and the whole image was the shape; and
+// it looked for a 16-bit image's masks after a V5 header, where they are inside it, refusing a
+// game's 5-6-5 sprite. Each now reads as the same pixels with a 40-byte header, as OpenCV reads.
+TEST(DecodeOracle, Stop58_BmpFormsOpenCVReadWronglyReadAsTheirPixels) {
+  std::mt19937 random(58);
+  const int width = 37, height = 11;
+  auto pitch = [&](int bits) { return ((width * bits + 7) / 8 + 3) / 4 * 4; };
+  const std::string pixels24 = random_bytes(random, static_cast<std::size_t>(pitch(24)) * height);
+  expect_same_as_opencv("os2_24.bmp",
+                        "BM" + le(26 + static_cast<std::uint32_t>(pixels24.size()), 4) + le(0, 4) +
+                            le(26, 4) + le(12, 4) + le(width, 2) + le(height, 2) + le(1, 2) +
+                            le(24, 2) + pixels24,
+                        bmp(width, height, 24, 0, {}, pixels24));
+  const std::string palette3 = random_bytes(random, 3 * 256);
+  std::string palette4;
+  for (int i = 0; i < 256; ++i) palette4 += palette3.substr(3 * std::size_t(i), 3) + '\0';
+  const std::string indices = random_bytes(random, static_cast<std::size_t>(pitch(8)) * height);
+  expect_same_as_opencv("os2_8.bmp",
+                        "BM" + le(0, 4) + le(0, 4) + le(26 + 768, 4) + le(12, 4) + le(width, 2) +
+                            le(height, 2) + le(1, 2) + le(8, 2) + palette3 + indices,
+                        bmp(width, height, 8, 0, palette4, indices));
+  // V5 header (124 bytes): the three masks at its bytes 40 to 51, then the alpha mask, colour
+  // space, end points, gammas, intent, profile and a reserved word.
+  const std::string pixels16 = random_bytes(random, static_cast<std::size_t>(pitch(16)) * height);
+  for (const auto& [name, masks] : std::vector<std::pair<std::string, std::string>>{
+           {"v5_bitfields565.bmp", le(0xf800, 4) + le(0x7e0, 4) + le(0x1f, 4)},
+           {"v5_bitfields555.bmp", le(0x7c00, 4) + le(0x3e0, 4) + le(0x1f, 4)}}) {
+    const std::uint32_t offset = 14 + 124;
+    const std::string v5 = "BM" + le(offset + static_cast<std::uint32_t>(pixels16.size()), 4) +
+                           le(0, 4) + le(offset, 4) + le(124, 4) + le(width, 4) +
+                           le(static_cast<std::uint32_t>(-height), 4) + le(1, 2) + le(16, 2) +
+                           le(3, 4) + le(static_cast<std::uint32_t>(pixels16.size()), 4) +
+                           le(2835, 4) + le(2835, 4) + le(0, 4) + le(0, 4) + masks + le(0, 4) +
+                           "BGRs" + std::string(36 + 12 + 16, '\0') + pixels16;
+    ASSERT_EQ(v5.size(), offset + pixels16.size());
+    expect_same_as_opencv(name, v5, bmp(width, -height, 16, 3, {}, pixels16, masks));
+  }
 }
 
 TEST(DecodeOracle, WebpAsOpenCV) {

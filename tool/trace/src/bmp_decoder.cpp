@@ -2,7 +2,9 @@
 // the fourth byte of 32-bit images as alpha, which OpenCV ignored.
 //
 // Forms: 1, 4 and 8 bits with a palette (uncompressed, RLE4, RLE8), 16 bits (5-5-5 or 5-6-5), 24
-// and 32 bits; OS/2 headers (12 bytes) as grey, as OpenCV read them.
+// and 32 bits. Where OpenCV was wrong, the file's colours are read: OS/2 headers (12 bytes) in
+// colour, which OpenCV read as grey (a --color-key then keyed nothing), and 16-bit masks inside a
+// V4 or V5 header, which OpenCV looked for after it (a real 5-6-5 sprite was refused).
 #include "pixel_sink.h"
 
 #include <algorithm>
@@ -17,11 +19,6 @@ namespace {
 constexpr std::uint32_t kRgb = 0, kRle8 = 1, kRle4 = 2, kBitfields = 3;
 
 using Bgr = std::array<std::uint8_t, 3>;
-
-// OpenCV's grey: (B·1868 + G·9617 + R·4899 + 2^13) >> 14.
-std::uint8_t grey_of(const Bgr& c) {
-  return static_cast<std::uint8_t>((c[0] * 1868 + c[1] * 9617 + c[2] * 4899 + (1 << 13)) >> 14);
-}
 
 // The 32-bit forms with an alpha byte in the standard place: uncompressed (BI_RGB), or
 // BI_BITFIELDS with the standard BGRA masks. An all-zero fourth byte means "unused" by the BMP
@@ -195,7 +192,8 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
         palette[i] = {entry[0], entry[1], entry[2]};
       }
     } else if (bits == 16 && compression == kBitfields) {
-      Cursor in(bytes, 14 + std::size_t{info_size}, name);
+      // The masks follow a 40-byte header; V2 to V5 headers (52 bytes and more) hold them there.
+      Cursor in(bytes, 14 + 40, name);
       const std::uint8_t* masks = in.take(12);
       auto mask = [&](int k) {
         return static_cast<std::uint32_t>(masks[4 * k]) | masks[4 * k + 1] << 8 |
@@ -259,16 +257,12 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
       }
     }
   }
-  const Layout layout = four ? Layout{4, true} : Layout{os2 ? 1 : 3, false};
+  const Layout layout = four ? Layout{4, true} : Layout{3, false};
   sink.start(width, height, layout);
-  std::vector<std::uint8_t> grey(os2 ? static_cast<std::size_t>(width) : 0);
   for (int y = 0; y < height; ++y) {
     const int stored = bottom_up ? height - 1 - y : y;
     if (four) {
       sink.put_row(y, bgra[static_cast<std::size_t>(stored) * width].data());
-    } else if (os2) {
-      for (int x = 0; x < width; ++x) grey[x] = grey_of(canvas.row(stored)[x]);
-      sink.put_row(y, grey.data());
     } else {
       sink.put_row(y, canvas.row(stored)->data());
     }
