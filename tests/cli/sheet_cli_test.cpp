@@ -354,5 +354,24 @@ TEST_F(SheetCli, BadSheetsAreRefusedNamingTheFile) {
                  "frame 'a': pivot: 'x' must be a finite number");
 }
 
+// Stop 58, a helper's hostile files: a hash that keys two frames alike lost one of them (the
+// parsed object keeps one), where the README promises a refusal; and 'frames' nested 90,000
+// deep crashed the cook (the ordered JSON copies a member's value whole, recursively).
+TEST_F(SheetCli, Stop58_ADuplicateKeyOrADeepNestingIsRefusedNotLostOrACrash) {
+  const std::string frame = R"({"frame": {"x": 1, "y": 0, "w": 2, "h": 2}})";
+  expect_refused("same_key.json",
+                 R"({"frames": {"f1.png": )" + frame + R"(, "f2.png": )" + frame +
+                     R"(, "f1.png": )" + frame + R"(}, "meta": {"image": "atlas.png"}})",
+                 "the key 'f1.png' appears twice in one object");
+  expect_refused("deep.json",
+                 R"({"frames": )" + std::string(100000, '[') + std::string(100000, ']') +
+                     R"(, "meta": {"image": "atlas.png"}})",
+                 "arrays and objects nested deeper than 256 levels");
+  // Brackets inside a string are no nesting.
+  write("brackets.json", R"({"frames": {")" + std::string(1000, '[') + R"(": )" + frame +
+                             R"(}, "meta": {"image": "atlas.png"}})");
+  EXPECT_EQ(cook((directory / "brackets.json").string()).size(), 1u);
+}
+
 }  // namespace
 }  // namespace hullcook
