@@ -123,6 +123,42 @@ TEST_F(DepfileCli, WrittenWithTheOutputsOrNotAtAll) {
   EXPECT_FALSE(fs::exists(directory / "out.hcb"));
 }
 
+// Stop 58, a helper's hostile files: --depfile and --report over a file the cook reads (an image
+// found in a folder, a sidecar) replaced it with exit 0, where -o was refused; and an output that
+// is a pipe or a device was renamed over (--depfile /dev/null, run as root, made it a file).
+TEST_F(DepfileCli, Stop58_SideOutputsNeverReplaceAnInputOrAPipe) {
+  const fs::path image = directory / "sprites/a#1.png";
+  const fs::path sidecar = directory / "sprites/with space/b$.physics.json";
+  const std::string image_bytes = read_bytes(image), sidecar_bytes = read_bytes(sidecar);
+  for (const std::string& side : {"--depfile " + quoted(image), "--report " + quoted(sidecar),
+                                  "--depfile " + quoted(sidecar)}) {
+    SCOPED_TRACE(side);
+    auto result = run_hullcook("cook " + quoted(directory / "sprites") + " -o " +
+                               quoted(directory / "out.hcb") + " -q " + side);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+    EXPECT_NE(result.output.find("this output would replace an input"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(read_bytes(image), image_bytes);
+    EXPECT_EQ(read_bytes(sidecar), sidecar_bytes);
+    EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  }
+  const fs::path pipe_output = directory / "pipe.hcb", pipe_depfile = directory / "pipe.d";
+  for (const fs::path& pipe : {pipe_output, pipe_depfile}) {
+    ASSERT_EQ(std::system(("mkfifo " + quoted(pipe)).c_str()), 0);
+  }
+  for (const std::string& outputs :
+       {"-o " + quoted(pipe_output),
+        "-o " + quoted(directory / "out.hcb") + " --depfile " + quoted(pipe_depfile)}) {
+    SCOPED_TRACE(outputs);
+    auto result = run_hullcook("cook " + quoted(image) + " -q " + outputs);
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::output_failed)) << result.output;
+    EXPECT_NE(result.output.find("it is not a regular file"), std::string::npos) << result.output;
+    EXPECT_TRUE(fs::is_fifo(pipe_output));
+    EXPECT_TRUE(fs::is_fifo(pipe_depfile));
+    EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  }
+}
+
 // GNU Make itself reads the depfile: a change to the physics sidecar, which the rule does not
 // name, makes the fragment out of date; nothing else does.
 TEST_F(DepfileCli, MakeRebuildsWhenASidecarChanges) {

@@ -185,7 +185,13 @@ void add_cook(CLI::App& root, CommandAction& action) {
       keep_freed_memory();
       CookResult result = cook(inputs, command->settings, on_cooked);
       if (!command->name.empty()) rename_assets(result, command->name);
-      check_not_read(result, outputs);
+      // Every file written, side outputs too: a --depfile or --report over an image found in a
+      // folder, or over a settings file, replaced it (stop 58).
+      std::vector<std::filesystem::path> written = outputs;
+      for (const std::string* side : {&command->depfile, &command->report, &command->html}) {
+        if (!side->empty()) written.emplace_back(*side);
+      }
+      check_not_read(result, written);
       auto files = output_files(result, outputs, command->settings, {}, stream.get());
       if (!command->depfile.empty()) {
         files.push_back(

@@ -136,6 +136,20 @@ void check_directory_of(const std::filesystem::path& path) {
     throw OutputError(path.string() + ": cannot write: directory " + directory.string() +
                       " does not exist");
   }
+  check_replaceable(path);
+}
+
+void check_replaceable(const std::filesystem::path& path) {
+  // The rename replaces what is there: a device or a pipe (--depfile /dev/null, run as root,
+  // turned /dev/null into a file: stop 58) is refused. A link is replaced, its target untouched.
+  struct stat status {};
+  if (::lstat(path.c_str(), &status) != 0) return;
+  if (S_ISREG(status.st_mode) || S_ISLNK(status.st_mode)) return;
+  throw OutputError(path.string() + ": cannot write: " +
+                    (S_ISDIR(status.st_mode) ? "it is a directory"
+                                             : "it is not a regular file (a device or a pipe): "
+                                               "outputs are written to a new file and renamed "
+                                               "over the old one"));
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
@@ -156,6 +170,12 @@ void write_files_atomically(const std::vector<OutputFile>& files) {
   }
   for (std::size_t k = 0; k < files.size(); ++k) {
     std::error_code error;
+    try {
+      check_replaceable(files[k].path);
+    } catch (...) {
+      remove_temporaries(k);
+      throw;
+    }
     std::filesystem::rename(temporaries[k], files[k].path, error);
     if (error) {
       remove_temporaries(k);

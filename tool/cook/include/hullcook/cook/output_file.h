@@ -12,8 +12,13 @@
 
 namespace hullcook {
 
-// Throws OutputError naming path if the directory it would be written in does not exist.
+// Throws OutputError naming path if the directory it would be written in does not exist, or if
+// the path holds what a rename must not replace (see check_replaceable).
 void check_directory_of(const std::filesystem::path& path);
+
+// Throws OutputError naming path when something that a rename must not replace is there: a
+// directory, a device, a pipe or a socket (a regular file or a link is replaced; nothing, fine).
+void check_replaceable(const std::filesystem::path& path);
 
 // Writes bytes to a temporary file beside path, then renames it over path.
 // Throws OutputError naming the file and the reason; on failure nothing is left behind.
