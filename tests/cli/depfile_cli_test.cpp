@@ -159,6 +159,26 @@ TEST_F(DepfileCli, Stop58_SideOutputsNeverReplaceAnInputOrAPipe) {
   }
 }
 
+// Stop 58, a helper's hostile files: a broken link named hullcook.json, NAME.hullcook.json or
+// NAME.physics.json was taken as no file (the cook used the defaults and its depfile did not name
+// the link), where a broken link to an image is an error. It is refused, naming the link.
+TEST_F(DepfileCli, Stop58_ABrokenLinkWhereASettingsFileIsLookedForIsRefused) {
+  for (const char* name : {"hullcook.json", "a#1.hullcook.json", "a#1.physics.json"}) {
+    SCOPED_TRACE(name);
+    const fs::path link = directory / "sprites" / name;
+    fs::create_symlink(directory / "nowhere.json", link);
+    auto result = run_hullcook("cook " + quoted(directory / "sprites") + " -o " +
+                               quoted(directory / "out.hcb") + " -q --depfile " +
+                               quoted(directory / "out.d"));
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+    EXPECT_NE(result.output.find(link.string() + ": a broken link"), std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+    EXPECT_FALSE(fs::exists(directory / "out.d"));
+    fs::remove(link);
+  }
+}
+
 // GNU Make itself reads the depfile: a change to the physics sidecar, which the rule does not
 // name, makes the fragment out of date; nothing else does.
 TEST_F(DepfileCli, MakeRebuildsWhenASidecarChanges) {

@@ -16,6 +16,10 @@ using json = nlohmann::json;
 json read_json_object(const std::filesystem::path& path, const char* what) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) {
+      throw InputError(path.string() + ": a broken link (or a loop of links) where a file of " +
+                       what + " is looked for");
+    }
     throw InputError(path.string() + ": not a file of " + what);
   }
   std::ifstream stream(path);
@@ -29,9 +33,11 @@ json read_json_object(const std::filesystem::path& path, const char* what) {
 
 namespace {
 
+// A link counts, broken or not: a settings file that a broken link stands for is refused, not
+// silently taken as absent (stop 58).
 bool file_exists(const std::filesystem::path& path) {
   std::error_code error;
-  return std::filesystem::exists(path, error);
+  return std::filesystem::exists(std::filesystem::symlink_status(path, error));
 }
 
 // The one segment glob (no '/') against one segment of name.

@@ -22,8 +22,8 @@ bool ListedFiles::exists(const std::filesystem::path& path) const {
       !std::binary_search(listed->second.begin(), listed->second.end(), path.filename().native())) {
     return false;
   }
-  std::error_code error;
-  return std::filesystem::exists(path, error);
+  std::error_code error;  // a link counts, broken or not (see asset_settings.cpp)
+  return std::filesystem::exists(std::filesystem::symlink_status(path, error));
 }
 
 }  // namespace hullcook
