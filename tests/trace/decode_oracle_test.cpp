@@ -435,6 +435,70 @@ TEST(DecodeOracle, Stop58_BmpFormsOpenCVReadWronglyReadAsTheirPixels) {
   }
 }
 
+// Stop 59, a helper's sweep of real sprites: a 16-bit BMP's alpha mask (GIMP exports A1R5G5B5 and
+// A4R4G4B4) was ignored, so an A1R5G5B5 sprite had no alpha and was refused (or, keyed, traced
+// with its transparent pixels), and OpenCV refused A4R4G4B4 as unsupported. Each reads as the
+// PNG of the pixels its masks give: alpha from the alpha mask, colours scaled to 8 bits (5-5-5
+// as OpenCV scaled it, by a shift). An alpha mask whose bits are all 0 is unused.
+TEST(DecodeOracle, Stop59_A16BitBmpsAlphaMaskIsItsAlpha) {
+  std::mt19937 random(59);
+  const int width = 37, height = 11;
+  const int pitch = (width * 16 + 31) / 32 * 4;
+  struct Form {
+    std::string name;
+    std::uint32_t red, green, blue, alpha;
+    int header;  // 124 (V5) or 56 (V3)
+  };
+  for (const Form& form :
+       std::vector<Form>{{"a1r5g5b5.bmp", 0x7c00, 0x3e0, 0x1f, 0x8000, 124},
+                         {"a1r5g5b5_v3.bmp", 0x7c00, 0x3e0, 0x1f, 0x8000, 56},
+                         {"a4r4g4b4.bmp", 0xf00, 0xf0, 0xf, 0xf000, 124},
+                         {"x4r4g4b4.bmp", 0xf00, 0xf0, 0xf, 0, 124},
+                         {"a1r5g5b5_unused.bmp", 0x7c00, 0x3e0, 0x1f, 0x8000, 124}}) {
+    SCOPED_TRACE(form.name);
+    const bool unused = form.name.find("unused") != std::string::npos;
+    std::string pixels;
+    cv::Mat expected(height, width, CV_8UC4);
+    auto channel = [](unsigned v, std::uint32_t mask, bool shifted) {
+      int shift = 0;
+      while (!(mask >> shift & 1)) ++shift;
+      const unsigned top = mask >> shift, value = (v & mask) >> shift;
+      // OpenCV's 5-5-5: the five bits shifted up, the low three 0.
+      return static_cast<std::uint8_t>(shifted ? value << 3 : (value * 255 + top / 2) / top);
+    };
+    const bool opencv_scale = form.red == 0x7c00;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        unsigned v = random() & 0xffff;
+        if (unused) v &= ~form.alpha;
+        // Whole rows transparent and opaque, so that both kinds appear.
+        if (form.alpha && !unused && y % 3 == 0) v &= ~form.alpha;
+        if (form.alpha && !unused && y % 3 == 1) v |= form.alpha;
+        pixels += le(v, 2);
+        cv::Vec4b& out = expected.at<cv::Vec4b>(y, x);
+        out[0] = channel(v, form.blue, opencv_scale);
+        out[1] = channel(v, form.green, opencv_scale);
+        out[2] = channel(v, form.red, opencv_scale);
+        out[3] = form.alpha && !unused ? channel(v, form.alpha, false) : 255;
+      }
+      pixels += std::string(static_cast<std::size_t>(pitch - 2 * width), '\0');
+    }
+    const std::uint32_t offset = 14 + static_cast<std::uint32_t>(form.header);
+    std::string file = "BM" + le(offset + static_cast<std::uint32_t>(pixels.size()), 4) + le(0, 4) +
+                       le(offset, 4) + le(static_cast<std::uint32_t>(form.header), 4) +
+                       le(width, 4) + le(static_cast<std::uint32_t>(-height), 4) + le(1, 2) +
+                       le(16, 2) + le(3, 4) + le(static_cast<std::uint32_t>(pixels.size()), 4) +
+                       le(2835, 4) + le(2835, 4) + le(0, 4) + le(0, 4) + le(form.red, 4) +
+                       le(form.green, 4) + le(form.blue, 4) + le(form.alpha, 4);
+    file += std::string(offset - file.size(), '\0') + pixels;
+    cv::Mat reference = expected;
+    if (!form.alpha || unused) cv::cvtColor(expected, reference, cv::COLOR_BGRA2BGR);
+    std::vector<std::uint8_t> png;
+    ASSERT_TRUE(cv::imencode(".png", reference, png));
+    expect_same_as_opencv(form.name, file, {png.begin(), png.end()});
+  }
+}
+
 TEST(DecodeOracle, WebpAsOpenCV) {
   if (!cv::haveImageWriter(".webp")) GTEST_SKIP() << "OpenCV cannot write WebP here";
   cv::Mat bgra =

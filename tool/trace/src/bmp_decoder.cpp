@@ -1,10 +1,12 @@
 // BMP: what OpenCV 4.6's decoder (grfmt_bmp.cpp) gave, so that cooked outputs do not change, and
 // the fourth byte of 32-bit images as alpha, which OpenCV ignored.
 //
-// Forms: 1, 4 and 8 bits with a palette (uncompressed, RLE4, RLE8), 16 bits (5-5-5 or 5-6-5), 24
-// and 32 bits. Where OpenCV was wrong, the file's colours are read: OS/2 headers (12 bytes) in
-// colour, which OpenCV read as grey (a --color-key then keyed nothing), and 16-bit masks inside a
-// V4 or V5 header, which OpenCV looked for after it (a real 5-6-5 sprite was refused).
+// Forms: 1, 4 and 8 bits with a palette (uncompressed, RLE4, RLE8), 16 bits (5-5-5 or 5-6-5, or
+// other masks with an alpha mask), 24 and 32 bits. Where OpenCV was wrong, the file's colours are
+// read: OS/2 headers (12 bytes) in colour, which OpenCV read as grey (a --color-key then keyed
+// nothing), and 16-bit masks inside a V4 or V5 header, which OpenCV looked for after it (a real
+// 5-6-5 sprite was refused). A 16-bit image's alpha mask (GIMP's A1R5G5B5 and A4R4G4B4), which
+// OpenCV ignored or refused, is its alpha.
 #include "pixel_sink.h"
 
 #include <algorithm>
@@ -19,6 +21,28 @@ namespace {
 constexpr std::uint32_t kRgb = 0, kRle8 = 1, kRle4 = 2, kBitfields = 3;
 
 using Bgr = std::array<std::uint8_t, 3>;
+
+// One channel of a 16-bit BI_BITFIELDS pixel: a run of set bits, scaled to 0..255.
+class ChannelMask {
+ public:
+  ChannelMask() = default;
+  explicit ChannelMask(std::uint32_t mask) : mask_(mask) {
+    if (mask == 0) return;
+    while (!(mask >> shift_ & 1)) ++shift_;
+    top_ = mask >> shift_;
+  }
+  // A run of set bits within 16 (else the mask means nothing this decoder knows).
+  bool valid() const { return top_ != 0 && mask_ <= 0xffff && (top_ & (top_ + 1)) == 0; }
+  std::uint32_t mask() const { return mask_; }
+  std::uint8_t operator()(unsigned pixel) const {
+    return static_cast<std::uint8_t>((((pixel & mask_) >> shift_) * 255 + top_ / 2) / top_);
+  }
+
+ private:
+  std::uint32_t mask_ = 0;
+  unsigned shift_ = 0;
+  std::uint32_t top_ = 0;  // the mask's largest value, shifted down
+};
 
 // The 32-bit forms with an alpha byte in the standard place: uncompressed (BI_RGB), or
 // BI_BITFIELDS with the standard BGRA masks. An all-zero fourth byte means "unused" by the BMP
@@ -160,6 +184,10 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
   int width = 0, height = 0, bits = 0;
   std::uint32_t compression = kRgb;
   std::array<Bgr, 256> palette{};
+  // 16 bits: masks other than 5-5-5 and 5-6-5 (general, B, G, R's), and an alpha mask.
+  bool general = false;
+  std::array<ChannelMask, 3> colours;
+  ChannelMask alpha;
   if (os2) {
     width = static_cast<int>(u16_le(bytes, 18));
     height = static_cast<int>(u16_le(bytes, 20));
@@ -192,17 +220,31 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
         palette[i] = {entry[0], entry[1], entry[2]};
       }
     } else if (bits == 16 && compression == kBitfields) {
-      // The masks follow a 40-byte header; V2 to V5 headers (52 bytes and more) hold them there.
+      // The masks follow a 40-byte header; V2 to V5 headers (52 bytes and more) hold them there,
+      // and V3 to V5 (56 and more) an alpha mask after them.
       Cursor in(bytes, 14 + 40, name);
-      const std::uint8_t* masks = in.take(12);
+      const std::uint8_t* masks = in.take(info_size >= 56 ? 16 : 12);
       auto mask = [&](int k) {
         return static_cast<std::uint32_t>(masks[4 * k]) | masks[4 * k + 1] << 8 |
                masks[4 * k + 2] << 16 | static_cast<std::uint32_t>(masks[4 * k + 3]) << 24;
       };
-      if (mask(0) == 0x7c00 && mask(1) == 0x3e0 && mask(2) == 0x1f) {
+      const std::uint32_t red = mask(0), green = mask(1), blue = mask(2);
+      if (info_size >= 56) {
+        // An alpha mask that overlaps the colours' is taken for none, as OpenCV took every one.
+        const ChannelMask candidate(mask(3));
+        if (candidate.valid() && !(candidate.mask() & (red | green | blue))) alpha = candidate;
+      }
+      if (red == 0x7c00 && green == 0x3e0 && blue == 0x1f) {
         bits = 15;
-      } else if (!(mask(0) == 0xf800 && mask(1) == 0x7e0 && mask(2) == 0x1f)) {
-        unsupported();
+      } else if (!(red == 0xf800 && green == 0x7e0 && blue == 0x1f)) {
+        // Other masks (A4R4G4B4, X4R4G4B4): OpenCV refused them; each channel is scaled.
+        colours = {ChannelMask(red), ChannelMask(green), ChannelMask(blue)};
+        const bool disjoint = !(red & green) && !(red & blue) && !(green & blue);
+        if (!disjoint || !std::all_of(colours.begin(), colours.end(),
+                                      [](const ChannelMask& c) { return c.valid(); })) {
+          unsupported();
+        }
+        general = true;
       }
     } else if (bits == 16) {
       bits = 15;
@@ -214,6 +256,8 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
   const bool four = !os2 && bits == 32;
   Canvas canvas(width, height);
   std::vector<std::array<std::uint8_t, 4>> bgra;
+  std::vector<std::uint8_t> alphas;  // 16 bits with an alpha mask: per pixel, in decoding order
+  if (alpha.valid()) alphas.resize(static_cast<std::size_t>(width) * height);
   Cursor in(bytes, offset, name);
   if (compression == kRle4 || compression == kRle8) {
     decode_rle(in, canvas, width, height, bits, palette, name);
@@ -239,10 +283,12 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
           case 15:
           case 16: {
             const unsigned v = source[2 * x] | source[2 * x + 1] << 8;
-            out = bits == 15 ? Bgr{std::uint8_t((v << 3) & 0xf8), std::uint8_t((v >> 2) & 0xf8),
-                                   std::uint8_t((v >> 7) & 0xf8)}
-                             : Bgr{std::uint8_t((v << 3) & 0xf8), std::uint8_t((v >> 3) & 0xfc),
-                                   std::uint8_t((v >> 8) & 0xf8)};
+            out = general      ? Bgr{colours[2](v), colours[1](v), colours[0](v)}
+                  : bits == 15 ? Bgr{std::uint8_t((v << 3) & 0xf8), std::uint8_t((v >> 2) & 0xf8),
+                                     std::uint8_t((v >> 7) & 0xf8)}
+                               : Bgr{std::uint8_t((v << 3) & 0xf8), std::uint8_t((v >> 3) & 0xfc),
+                                     std::uint8_t((v >> 8) & 0xf8)};
+            if (!alphas.empty()) alphas[static_cast<std::size_t>(y) * width + x] = alpha(v);
             break;
           }
           case 24:
@@ -257,12 +303,25 @@ void decode_bmp(const std::string& bytes, PixelSink& sink) {
       }
     }
   }
-  const Layout layout = four ? Layout{4, true} : Layout{3, false};
+  // An alpha mask whose bits are all 0 is unused, as a 32-bit image's fourth byte is.
+  const bool masked_alpha =
+      std::any_of(alphas.begin(), alphas.end(), [](std::uint8_t a) { return a != 0; });
+  const Layout layout = four || masked_alpha ? Layout{4, true} : Layout{3, false};
   sink.start(width, height, layout);
+  std::vector<std::uint8_t> row;
   for (int y = 0; y < height; ++y) {
     const int stored = bottom_up ? height - 1 - y : y;
     if (four) {
       sink.put_row(y, bgra[static_cast<std::size_t>(stored) * width].data());
+    } else if (masked_alpha) {
+      row.resize(static_cast<std::size_t>(width) * 4);
+      const Bgr* colour = canvas.row(stored);
+      const std::uint8_t* a = alphas.data() + static_cast<std::size_t>(stored) * width;
+      for (int x = 0; x < width; ++x) {
+        std::copy(colour[x].begin(), colour[x].end(), row.begin() + 4 * x);
+        row[4 * static_cast<std::size_t>(x) + 3] = a[x];
+      }
+      sink.put_row(y, row.data());
     } else {
       sink.put_row(y, canvas.row(stored)->data());
     }
