@@ -494,5 +494,42 @@ TEST(EngineLimits, Stop58_AnEllipseThinnerThanTheWeldIsGrownIntoOneHull) {
   }
 }
 
+// A helper's generated polygons (stop 58): a sawtooth of 1,000 teeth 1e-6 wide and 1 high on a
+// unit square took 40 s at τ 1 %. Each tooth, thinner than the weld, grew its own hull round all
+// the teeth, proven by cells that searched every tooth. A hull grown for an earlier tooth that
+// holds a later one is proven once, wholly within τ, and given to it.
+TEST(EngineLimits, Stop59_TeethThinnerThanTheWeldShareTheHullGrownRoundThem) {
+  const int teeth = 200;
+  Ring saw{{0, -1}, {1, -1}, {1, 0}};
+  const double left = 0.5 - teeth * 1e-6 / 2;
+  for (int k = teeth; k > 0; --k) {
+    saw.push_back({left + k * 1e-6, 0});
+    saw.push_back({left + (k - 0.5) * 1e-6, 1});
+  }
+  saw.push_back({left, 0});
+  saw.push_back({0, 0});
+  const Region outline{saw, {}};
+  const double tau = 0.0106;
+  const EngineLimits limits{8, 0.005};
+  std::vector<CookedPiece> pieces;
+  ASSERT_NO_THROW(
+      pieces = apply_engine_limits(decompose_at(outline, tau), tau, limits, decompose_at, "saw"));
+  expect_pieces_contract(pieces, {outline}, tau, limits);
+  // The teeth's hulls: a few distinct ones, not one per tooth.
+  std::vector<Ring> distinct;
+  std::size_t on_teeth = 0;
+  for (const CookedPiece& piece : pieces) {
+    const bool tooth = std::all_of(piece.component.outer.begin(), piece.component.outer.end(),
+                                   [](Vec2 p) { return p.y >= 0; });
+    if (!tooth) continue;
+    ++on_teeth;
+    if (std::find(distinct.begin(), distinct.end(), piece.hull) == distinct.end()) {
+      distinct.push_back(piece.hull);
+    }
+  }
+  EXPECT_GE(on_teeth, std::size_t(teeth / 2));
+  EXPECT_LE(distinct.size(), 4u) << on_teeth << " pieces on the teeth";
+}
+
 }  // namespace
 }  // namespace hullcook

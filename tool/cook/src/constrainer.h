@@ -134,8 +134,9 @@ class Constrainer {
   // For each vertex of merged, the depth it was allowed in the slot it came from.
   std::vector<double> merged_depths(const Region& merged, const Slot& a, const Slot& b) const;
 
-  // Gives slot k the smallest engine-ready hull that holds its component. It may reach over the
-  // neighbours: only the outline bounds it, and cells prove its area.
+  // Gives slot k the smallest engine-ready hull that holds its component, or a hull grown for an
+  // earlier slot that holds it too. It may reach over the neighbours: only the outline bounds
+  // it, and cells prove its area.
   bool grow(std::size_t k);
 
   // Whether hull (convex) is thinner than merge_width.
@@ -182,6 +183,14 @@ class Constrainer {
   std::vector<std::vector<std::size_t>> touching_;  // per slot: those touching it at its last try
   std::vector<std::size_t> touched_at_;             // per slot: the clock at its last try (0: none)
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
+  // The hulls grow gave, in order, with whether each is proven wholly within τ of the outline
+  // (0: not yet asked, 1: yes, -1: not proven), for the slots grown after it.
+  struct GrownHull {
+    Ring hull;
+    SlotBox box;
+    signed char whole = 0;
+  };
+  std::vector<GrownHull> grown_hulls_;
 };
 
 }  // namespace hullcook
