@@ -10,8 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 
 namespace hullcook {
 namespace {
@@ -166,6 +168,50 @@ TEST(Fragment, AHugeCountWithAGoodChecksumIsRefusedNotAllocated) {
   std::memcpy(bytes.data() + sizeof(format::FragmentHeader), &huge, 4);  // the settings' length
   restamp_checksum(bytes);
   EXPECT_NE(refusal(bytes).find("too large"), std::string::npos) << refusal(bytes);
+}
+
+// Stop 58, a helper's hostile fragments: a hull's bytes changed and the checksum made to match
+// (a clockwise hull, one with a repeated vertex) were linked into glTF and debug JSON as they
+// were, with exit 0. Every hull read is checked as the contract checks the cook's own: refused,
+// naming which.
+TEST(Fragment, Stop59_AHullThatIsNotConvexAndCounterClockwiseIsRefused) {
+  const Settings settings = rich_settings();
+  const std::vector<CookedAsset> cooked =
+      cook({kSprites / "frozen-bubble__balls__bubble-1-mini.png"}, settings).assets;
+  ASSERT_EQ(cooked.size(), 1u);
+  ASSERT_GE(cooked[0].levels.size(), 2u);
+  ASSERT_GE(cooked[0].levels[1].hulls.at(0).size(), 3u);
+  EXPECT_EQ(refusal(write_fragment(cooked, settings)), "");
+  struct Forgery {
+    std::string what, expected;
+    std::function<void(CookedAsset&)> forge;
+  };
+  const std::vector<Forgery> forgeries{
+      {"a clockwise hull of level 2", "level 2, hull 1: its hull is clockwise",
+       [](CookedAsset& a) {
+         std::reverse(a.levels[1].hulls[0].begin(), a.levels[1].hulls[0].end());
+       }},
+      {"a repeated vertex", "level 1, hull 1: its hull is not convex at its vertex",
+       [](CookedAsset& a) {
+         Ring& hull = a.levels[0].hulls[0];
+         hull.insert(hull.begin() + 1, hull[1]);
+       }},
+      {"a folded hull", "level 1, hull 1: its hull is not convex at its vertex",
+       [](CookedAsset& a) {
+         Ring& hull = a.levels[0].hulls[0];
+         std::swap(hull[0], hull[1]);
+       }},
+      {"a piece's clockwise hull", "piece 1: its hull is clockwise",
+       [](CookedAsset& a) { std::reverse(a.pieces[0].hull.begin(), a.pieces[0].hull.end()); }}};
+  for (const Forgery& forgery : forgeries) {
+    SCOPED_TRACE(forgery.what);
+    std::vector<CookedAsset> forged = cooked;
+    forgery.forge(forged[0]);
+    const std::string message = refusal(write_fragment(forged, settings));
+    EXPECT_NE(message.find("sprites.hcf: malformed fragment: " + forgery.expected),
+              std::string::npos)
+        << message;
+  }
 }
 
 TEST(Fragment, NotAFragment) {

@@ -727,6 +727,12 @@ std::vector<std::string> find_contract_violations(const std::vector<CookedPiece>
   return violations;
 }
 
+std::optional<std::string> hull_shape_defect(const Ring& hull) {
+  const std::optional<HullDefect> defect = hull_defect(hull, EngineLimits{0, 0.0});
+  if (!defect) return std::nullopt;
+  return defect->problem;
+}
+
 void enforce_contract(const std::string& source, const std::vector<std::string>& violations) {
   if (violations.empty()) return;
   std::string message =

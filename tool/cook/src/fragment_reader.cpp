@@ -1,5 +1,7 @@
 #include "hullcook/cook/fragment.h"
 
+#include "hullcook/cook/contract.h"
+
 #include "hullcook/core/error.h"
 #include "hullcook/format/crc32.h"
 #include "hullcook/format/fragment_layout.h"
@@ -9,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 namespace hullcook {
@@ -68,6 +71,17 @@ class Decoder {
     for (std::size_t i = 0; i < n; ++i) ring.push_back(point(what));
     return ring;
   }
+  // A hull, which the writers take as convex and counter-clockwise: a corrupt one (its bytes
+  // changed and the checksum made to match) was written on as it was, clockwise or folded.
+  Ring hull(const std::string& which) {
+    const std::size_t start = at_;
+    Ring ring = this->ring("hull vertices", 3);
+    if (std::optional<std::string> defect = hull_shape_defect(ring)) {
+      at_ = start;
+      fail(which + ": " + *defect);
+    }
+    return ring;
+  }
   Region region() {
     Region region;
     region.outer = ring("outline vertices", 3);
@@ -117,7 +131,7 @@ CookedAsset decode_asset(Decoder& in) {
   for (std::size_t p = 0; p < pieces; ++p) {
     CookedPiece piece;
     piece.component = in.region();
-    piece.hull = in.ring("hull vertices", 3);
+    piece.hull = in.hull("piece " + std::to_string(p + 1));
     piece.concavity = in.f64("concavity");
     asset.pieces.push_back(std::move(piece));
   }
@@ -127,7 +141,10 @@ CookedAsset decode_asset(Decoder& in) {
     level.tau = in.f64("level tau");
     if (!(level.tau >= 0)) in.fail("a negative level tau");
     const std::size_t hulls = in.count("hulls", 4);
-    for (std::size_t h = 0; h < hulls; ++h) level.hulls.push_back(in.ring("hull vertices", 3));
+    for (std::size_t h = 0; h < hulls; ++h) {
+      level.hulls.push_back(
+          in.hull("level " + std::to_string(l + 1) + ", hull " + std::to_string(h + 1)));
+    }
     asset.levels.push_back(std::move(level));
   }
   if (flags & format::kFragmentHasPhysics) {

@@ -7,6 +7,7 @@
 #include "hullcook/cook/constrain.h"
 #include "hullcook/core/decompose.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -76,6 +77,11 @@ std::string sliver_piece_refusal(const Region& piece, std::string_view source);
 // which at that τ is bad input (the cook merges such a piece into a neighbour where τ allows).
 void refuse_sliver_pieces(const std::vector<CookedPiece>& pieces,
                           const std::vector<Region>& outline, double tau, std::string_view source);
+
+// Why hull is no convex counter-clockwise polygon, as the contract judges every hull ("its hull
+// is clockwise", "its hull is not convex at its vertex (x, y)", ...); nullopt when it is one. A
+// reader of hulls that another run wrote (link's fragments) checks them with it.
+std::optional<std::string> hull_shape_defect(const Ring& hull);
 
 // Throws ContractError "SOURCE: internal error: the output breaks its contract: FIRST (and N
 // more)" when there are violations.
