@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -23,6 +24,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -309,7 +311,14 @@ class HullReach {
   }
 
   void edge(Vec2 a, Vec2 b, Worst& beyond) {
-    if (outline().segment_within(a, b, limit_)) return;
+    // Hulls repeat: pieces thinner than the weld may share the hull grown round them (a comb of
+    // 1,000 teeth: 1,000 hulls alike, each edge searched along every tooth, 80 % of its cook).
+    const std::array<double, 4> key{a.x, a.y, b.x, b.y};
+    if (within_.count(key) != 0) return;
+    if (outline().segment_within(a, b, limit_)) {
+      within_.insert(key);
+      return;
+    }
     constexpr int kSamples = 256;
     Worst farthest;
     for (int k = 1; k < kSamples; ++k) {
@@ -329,6 +338,7 @@ class HullReach {
   std::vector<const Region*> regions_;
   std::optional<OutlineDistance> outline_;
   double limit_;
+  std::set<std::array<double, 4>> within_;  // edges (a, b) shown within the limit
 };
 
 // Where each hull vertex stands in the component's outer ring (ring.size() where it does not):
