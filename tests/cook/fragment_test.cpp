@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 
 namespace hullcook {
@@ -212,6 +213,36 @@ TEST(Fragment, Stop59_AHullThatIsNotConvexAndCounterClockwiseIsRefused) {
               std::string::npos)
         << message;
   }
+}
+
+// Stop 58, a helper's hostile fragments: one followed by a gigabyte of other bytes was read whole
+// (20 s, a gigabyte of memory) before its size was found wrong. The header is read first: a
+// sparse file of 64 GB is refused at once, not read.
+TEST(Fragment, Stop59_AFragmentLongerThanItsHeaderSaysIsRefusedUnread) {
+  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" /
+                   "fragment_longer_than_its_header_says";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "long.hcf";
+  const std::string bytes = fragment_bytes();
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  EXPECT_EQ(read_fragment(path).assets.size(), 2u);
+  std::error_code error;
+  std::filesystem::resize_file(path, std::uintmax_t{64} << 30, error);
+  if (error) GTEST_SKIP() << "no sparse file of 64 GB here: " << error.message();
+  try {
+    read_fragment(path);
+    ADD_FAILURE() << "read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("long.hcf: malformed fragment: 68719476736 bytes where "
+                                         "its header says " +
+                                         std::to_string(bytes.size())),
+              std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(Fragment, NotAFragment) {

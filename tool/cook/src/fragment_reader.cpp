@@ -174,17 +174,21 @@ CookedAsset decode_asset(Decoder& in) {
   return asset;
 }
 
-FragmentHeader read_header(std::string_view bytes, const std::string& file) {
+// The header's own checks, for a file of file_size bytes that starts with start (its first
+// bytes, at least the header's when the file holds them): a reader learns from them alone
+// whether the file is worth reading whole.
+FragmentHeader check_header(std::string_view start, std::uint64_t file_size,
+                            const std::string& file) {
   const std::size_t magic_size = sizeof(format::kFragmentMagic);
-  if (std::memcmp(bytes.data(), format::kFragmentMagic, std::min(bytes.size(), magic_size)) != 0) {
+  if (std::memcmp(start.data(), format::kFragmentMagic, std::min(start.size(), magic_size)) != 0) {
     throw InputError(file + ": not a hullcook fragment (.hcf, written by hullcook cook -o X.hcf)");
   }
-  if (bytes.size() < sizeof(FragmentHeader)) {
-    throw InputError(file + ": truncated fragment: " + std::to_string(bytes.size()) +
+  if (file_size < sizeof(FragmentHeader) || start.size() < sizeof(FragmentHeader)) {
+    throw InputError(file + ": truncated fragment: " + std::to_string(file_size) +
                      " bytes, shorter than its header");
   }
   FragmentHeader header;
-  std::memcpy(&header, bytes.data(), sizeof(header));
+  std::memcpy(&header, start.data(), sizeof(header));
   if (header.format_version != format::kFragmentVersion) {
     throw InputError(file + ": fragment format version " + std::to_string(header.format_version) +
                      ", this hullcook links version " + std::to_string(format::kFragmentVersion) +
@@ -196,14 +200,19 @@ FragmentHeader read_header(std::string_view bytes, const std::string& file) {
     throw InputError(file + ": cooked by hullcook " + version + ", this is hullcook " +
                      tool_version() + "; cook it again");
   }
-  if (header.total_size > bytes.size()) {
-    throw InputError(file + ": truncated fragment: " + std::to_string(bytes.size()) + " bytes of " +
+  if (header.total_size > file_size) {
+    throw InputError(file + ": truncated fragment: " + std::to_string(file_size) + " bytes of " +
                      std::to_string(header.total_size));
   }
-  if (header.total_size < bytes.size()) {
-    throw InputError(file + ": malformed fragment: " + std::to_string(bytes.size()) +
+  if (header.total_size < file_size) {
+    throw InputError(file + ": malformed fragment: " + std::to_string(file_size) +
                      " bytes where its header says " + std::to_string(header.total_size));
   }
+  return header;
+}
+
+FragmentHeader read_header(std::string_view bytes, const std::string& file) {
+  const FragmentHeader header = check_header(bytes, bytes.size(), file);
   FragmentHeader unsummed = header;
   unsummed.checksum = 0;
   std::uint32_t checksum = format::crc32(0, &unsummed, sizeof(unsummed));
@@ -250,8 +259,16 @@ Fragment read_fragment(const std::filesystem::path& path) {
   }
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError(path.string() + ": cannot read");
+  // The header first: a fragment with a gigabyte of anything after it was read whole (20 s and
+  // a gigabyte of memory) before its size was found wrong.
+  const std::uint64_t size = std::filesystem::file_size(path, error);
+  if (error) throw InputError(path.string() + ": cannot read");
+  std::string start(std::min<std::uint64_t>(size, sizeof(FragmentHeader)), '\0');
+  stream.read(start.data(), static_cast<std::streamsize>(start.size()));
+  if (!stream) throw InputError(path.string() + ": cannot read");
+  check_header(start, size, path.string());
   std::ostringstream bytes;
-  bytes << stream.rdbuf();
+  bytes << start << stream.rdbuf();
   if (!stream && !stream.eof()) throw InputError(path.string() + ": cannot read");
   return parse_fragment(bytes.view(), path.string());
 }
