@@ -99,5 +99,66 @@ TEST(OutlineDistance, Issue54_ContainsInRowsOfManyEdgesAnswersAsARayParity) {
   EXPECT_GT(inside, 300);
 }
 
+// Stop 59: a point's distance stops at its own cell when the nearest edge found is nearer than
+// the cell's sides (a disc of thousands of vertices measured the nine cells round each point).
+// The answer must stay the whole scan's: the least distance to any edge, 0 inside, on outlines
+// dense and sparse, at scales from 1e-6 to 1e6, for points near and far.
+TEST(OutlineDistance, Stop59_DistanceIsTheLeastToAnyEdgeWhereverItStopsScanning) {
+  std::mt19937_64 random(59);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (double scale : {1e-6, 1.0, 1e6}) {
+    for (int vertices : {12, 400, 6000}) {
+      SCOPED_TRACE(std::to_string(vertices) + " vertices at scale " + std::to_string(scale));
+      Ring rough;
+      for (int k = 0; k < vertices; ++k) {
+        const double angle = 2 * M_PI * k / vertices;
+        const double radius = scale * (100 + (k % 7 == 3 ? 30 : 0) + unit(random));
+        rough.push_back({radius * std::cos(angle) + 7 * scale, radius * std::sin(angle)});
+      }
+      const Region region{rough, {}};
+      const OutlineDistance outline({&region});
+      for (int k = 0; k < 2000; ++k) {
+        const double angle = 2 * M_PI * unit(random);
+        const double radius =
+            scale * (k % 2 ? 100 + 40 * (unit(random) - 0.5) : 160 * unit(random));
+        const Vec2 p{radius * std::cos(angle) + 7 * scale, radius * std::sin(angle)};
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < rough.size(); ++i) {
+          least =
+              std::min(least, point_segment_distance(p, rough[i], rough[(i + 1) % rough.size()]));
+        }
+        const double expected = locate_point(rough, p) == Location::outside ? least : 0.0;
+        const double found = outline.distance(p, std::numeric_limits<double>::infinity());
+        ASSERT_EQ(found == 0.0, expected == 0.0) << k;
+        ASSERT_NEAR(found, expected, 1e-12 * scale) << k;
+      }
+    }
+  }
+}
+
+// Stop 59: the fitters skip the search along a segment whose ends lie within the bound when the
+// outline is one convex polygon (the distance to it is convex along the segment). A polygon that
+// turns left at every vertex but winds twice (a pentagram's vertices in star order), or one with
+// a notch or a hole, is not one.
+TEST(OutlineDistance, Stop59_OnlyOneConvexRingCountsAsConvex) {
+  Ring pentagon, pentagram;
+  for (int k = 0; k < 5; ++k) {
+    pentagon.push_back({std::cos(2 * M_PI * k / 5), std::sin(2 * M_PI * k / 5)});
+    pentagram.push_back({std::cos(4 * M_PI * k / 5), std::sin(4 * M_PI * k / 5)});
+  }
+  const Region convex{pentagon, {}};
+  EXPECT_TRUE(OutlineDistance({&convex}).is_convex());
+  const Region twice{pentagram, {}};
+  EXPECT_FALSE(OutlineDistance({&twice}).is_convex());
+  const Region notched{{{0, 0}, {4, 0}, {4, 4}, {2, 3}, {0, 4}}, {}};
+  EXPECT_FALSE(OutlineDistance({&notched}).is_convex());
+  const Region holed{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {1, 2}, {2, 2}, {2, 1}}}};
+  EXPECT_FALSE(OutlineDistance({&holed}).is_convex());
+  const Region collinear{{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}, {}};
+  EXPECT_FALSE(OutlineDistance({&collinear}).is_convex());
+  const Region other{{{10, 0}, {14, 0}, {14, 4}}, {}};
+  EXPECT_FALSE(OutlineDistance({&convex, &other}).is_convex());
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -488,18 +488,32 @@ std::optional<Ring> HullFitter::mend_local_violations(Ring hull) const {
     if (hull.size() < 3 || (!large_enough && too_small(hull))) return std::nullopt;
     if (!large_enough) {
       const double weld = limits_.weld_distance();
-      double twice = 0, magnitude = 0;
+      double twice = 0, magnitude = 0, reach = 0;
       for (std::size_t i = 1; i + 1 < hull.size(); ++i) {
         const Vec2 a = hull[i] - hull[0], b = hull[i + 1] - hull[0];
         twice += a.x * b.y - a.y * b.x;
         magnitude += std::abs(a.x * b.y) + std::abs(a.y * b.x);
+        reach = std::max({reach, std::abs(a.x) + std::abs(a.y), std::abs(b.x) + std::abs(b.y)});
       }
       // Without a weld, too_small asks only for 3 vertices.
       // The sum's worst rounding is (n + 2) units in the last place of the magnitude; later
       // hulls, grown within τ from this one, have about its magnitude.
-      large_enough =
-          weld == 0 || (std::abs(twice) >= 2 * weld * weld &&
-                        double(hull.size() + 2) * 0x1p-52 * magnitude <= 0.25 * weld * weld);
+      const double n = double(hull.size());
+      large_enough = weld == 0 || (std::abs(twice) >= 2 * weld * weld &&
+                                   (n + 2) * 0x1p-52 * magnitude <= 0.25 * weld * weld);
+      // Or, where the bound is of the component (which this hull holds), the area is so far
+      // above that no rounding brings a later hull's back under: a later hull's vertices are
+      // this one's and apexes within bound of the component, so within reach + 2 bound of
+      // hull[0] in |x| + |y| (with slack for the component's rounding), and its sum's terms are
+      // below 4 (reach + 2 bound)^2 each (taken twice over below). The first test alone failed
+      // wherever n times the magnitude outgrew the weld's square (a disc's cap of thousands of
+      // vertices at the default weld): the area was summed again after every removal, which
+      // made mending it quadratic.
+      if (!large_enough && reach_is_component_) {
+        const double spread = reach * (1 + 1e-9) + 2 * bound_;
+        const double later = 8 * n * spread * spread;
+        large_enough = twice >= 2 * weld * weld + 2 * (n + 2) * 0x1p-52 * (magnitude + later);
+      }
     }
     std::vector<std::size_t> edges;
     if (!queued) edges = edges_to_mend(hull, limits_);
@@ -568,6 +582,10 @@ bool HullFitter::measure_depths(const Ring& hull, std::vector<VertexDepth>& dept
   bool ok = true;
   std::size_t k = 0;
   const NearestEdges nearest_edge(hull);
+  // locate_point's answers by bands of the hull's edges, built at the first vertex located: a
+  // scan of the whole hull for each vertex not on it made measuring a rough disc's cap of
+  // thousands of vertices, in a hull of hundreds, quadratic.
+  std::optional<RingLocator> locator;
   std::size_t edge = 0;  // the last vertex's: most neighbours share it
   for_each_vertex(component_, [&](Vec2 v) {
     double squared;
@@ -577,7 +595,8 @@ bool HullFitter::measure_depths(const Ring& hull, std::vector<VertexDepth>& dept
     // Located even within rounding (where holds_component passes it unlocated), so that
     // holds_component_after knows which vertices it must measure again.
     const bool located = squared > 0;
-    const bool outside = located && locate_point(hull, v) == Location::outside;
+    if (located && !locator) locator.emplace(hull);
+    const bool outside = located && locator->locate(v) == Location::outside;
     if (depth > allowed_[k] * (1 + 1e-12) || (outside && depth > rounding)) ok = false;
     depths.push_back({squared, edge_start, !outside});
     ++k;

@@ -202,6 +202,20 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
     }
   }
   if (edges_.empty()) return;
+  if (components.size() == 1 && components[0]->holes.empty()) {
+    // Left turns alone allow a ring that winds more than once (a star polygon): the turning sums
+    // to 2π for a convex ring, to 4π or more otherwise.
+    const Ring& ring = components[0]->outer;
+    const std::size_t n = ring.size();
+    bool convex = n >= 3;
+    double turning = 0;
+    for (std::size_t i = 0; i < n && convex; ++i) {
+      const Vec2 before = ring[i == 0 ? n - 1 : i - 1], at = ring[i], after = ring[(i + 1) % n];
+      if (orientation(before, at, after) <= 0) convex = false;
+      turning += std::atan2(cross(at - before, after - at), glm::dot(at - before, after - at));
+    }
+    convex_ = convex && turning < 3 * std::acos(-1.0);
+  }
 
   Vec2 low{kInfinity, kInfinity}, high{-kInfinity, -kInfinity};
   for (const Edge& e : edges_) {
@@ -379,6 +393,22 @@ double OutlineDistance::measure(Vec2 p, double limit, EdgeSpan* nearest) const {
   if (outside > limit) return outside;
   int column = column_of(p.x), row = row_of(p.y);
   int rings = std::max(columns_, rows_);
+  // Within the grid, an edge registered in none of the k rings of cells round p's cell lies
+  // beyond their square: k cells plus p's distance to its own cell's side away. That distance,
+  // less a margin for the rounding of cell indices (p's and the edges': see for_each_cell_near),
+  // lets a point near the outline stop at its own cell (else the ring round it was always
+  // scanned: where the outline is dense, as on a disc of thousands of vertices, nine cells of
+  // dozens of edges for each apex mending measured). Only the proven nearest edge stops it, so
+  // the answer is the full scan's.
+  double inner = 0;
+  if (outside == 0) {
+    const Vec2 corner = origin_ + Vec2{column, row} * cell_;
+    const double side =
+        std::min({p.x - corner.x, corner.x + cell_ - p.x, p.y - corner.y, corner.y + cell_ - p.y});
+    const double margin = 1e-6 * cell_ + 1e-14 * (std::abs(origin_.x) + std::abs(origin_.y) +
+                                                  std::abs(p.x) + std::abs(p.y));
+    if (side > margin) inner = side - margin;
+  }
   double best = kInfinity, best_squared = kInfinity;
   const Edge* best_edge = nullptr;
   for (int k = 0; k <= rings; ++k) {
@@ -405,7 +435,7 @@ double OutlineDistance::measure(Vec2 p, double limit, EdgeSpan* nearest) const {
     }
     best = std::sqrt(best_squared);
     double unseen = std::max(outside, k * cell_);
-    if (best <= unseen || unseen > limit) break;
+    if (best <= unseen || unseen > limit || best <= k * cell_ + inner) break;
   }
   if (nearest && best_edge && best <= limit) *nearest = *best_edge;
   return best;

@@ -30,6 +30,11 @@ class OutlineDistance {
     Vec2 a, b;
   };
   double distance(Vec2 p, double limit, EdgeSpan* nearest = nullptr) const;
+  // True when the outline is one convex polygon (one ring, no hole, turning left at every vertex
+  // by exact orientations, winding once). The distance to it is then a convex function: along a
+  // segment it is at most the larger of the distances at its ends.
+  bool is_convex() const { return convex_; }
+
   // How many distance() calls this object has answered (what the fitters' shortcuts save).
   std::uint64_t distance_queries() const { return distance_queries_; }
 
@@ -90,6 +95,7 @@ class OutlineDistance {
   signed char centre_side(std::size_t cell, Vec2 centre) const;
 
   std::vector<Edge> edges_;
+  bool convex_ = false;
   Vec2 origin_{0, 0};  // the grid's lower corner
   double cell_ = 1;
   int columns_ = 0, rows_ = 0;
