@@ -226,4 +226,27 @@ TEST_F(LinkCli, LinkWritesNoFragment) {
 }
 
 }  // namespace
+// Stop 58, a helper's hostile files: a name holding terminal controls (an escape sequence in an
+// image's file name, kept in the bundle and glTF) was printed raw by inspect and by cook's table,
+// driving the terminal. Controls are shown as \xNN; the name itself is kept as it was.
+TEST_F(LinkCli, Stop59_ControlBytesInANameArePrintedEscaped) {
+  const std::string name = std::string("red\x1b[31mtext\x07.png");
+  fs::copy_file(kSprites / "frozen-bubble__balls__bubble-1-mini.png", directory / name);
+  for (const char* extension : {".hcb", ".glb"}) {
+    SCOPED_TRACE(extension);
+    const fs::path output = directory / (std::string("out") + extension);
+    const test::CommandResult cooked =
+        test::run_hullcook("cook '" + (directory / name).string() + "' -o " + output.string());
+    ASSERT_EQ(cooked.exit_code, 0) << cooked.output;
+    EXPECT_EQ(cooked.output.find('\x1b'), std::string::npos) << cooked.output;
+    EXPECT_NE(cooked.output.find("red\\x1b[31mtext\\x07.png"), std::string::npos) << cooked.output;
+    const test::CommandResult inspected = test::run_hullcook("inspect " + output.string());
+    ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
+    EXPECT_EQ(inspected.output.find('\x1b'), std::string::npos) << inspected.output;
+    EXPECT_EQ(inspected.output.find('\x07'), std::string::npos) << inspected.output;
+    EXPECT_NE(inspected.output.find("asset \"red\\x1b[31mtext\\x07.png\""), std::string::npos)
+        << inspected.output;
+  }
+}
+
 }  // namespace hullcook

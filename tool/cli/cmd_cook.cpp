@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "cook_options.h"
 #include "outputs.h"
+#include "printable.h"
 #include "progress.h"
 
 #include "hullcook/cook/bundle_writer.h"
@@ -47,7 +48,7 @@ void print_summary(const CookResult& result) {
   std::printf("%-56s %9s %7s %9s %13s %9s\n", "asset", "vertices", "pieces", "hulls",
               "max concavity", "ms");
   for (const CookedAsset& asset : result.assets) {
-    std::printf("%s %9zu %7zu %9zu %13.4g %9.2f\n", padded(asset.name, 56).c_str(),
+    std::printf("%s %9zu %7zu %9zu %13.4g %9.2f\n", padded(printable(asset.name), 56).c_str(),
                 asset.stats.traced_vertices, asset.stats.pieces, asset.stats.hulls,
                 asset.stats.max_concavity, asset.stats.total_ms);
   }

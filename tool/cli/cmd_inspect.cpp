@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "counted.h"
 #include "inspect.h"
+#include "printable.h"
 #include "shortest.h"
 
 #include "hullcook/cook/debug_json.h"
@@ -47,7 +48,7 @@ void print_text(const std::filesystem::path& path, const rt::Bundle& bundle) {
   std::cout << "\n";
   for (std::size_t a = 0; a < bundle.asset_count(); ++a) {
     const rt::Asset asset = bundle.asset(a);
-    std::cout << "asset \"" << asset.name() << "\": image " << asset.image_width() << "x"
+    std::cout << "asset \"" << printable(asset.name()) << "\": image " << asset.image_width() << "x"
               << asset.image_height() << " px, " << shortest_text(asset.pixels_per_unit())
               << " px/unit, pivot " << point_text(asset.pivot()) << ", y "
               << (asset.flip_y() ? "up" : "down") << ", measure "

@@ -4,6 +4,7 @@
 #include "counted.h"
 #include "gltf_data.h"
 #include "inspect.h"
+#include "printable.h"
 #include "shortest.h"
 
 #include "hullcook/cook/asset.h"
@@ -368,8 +369,8 @@ void print_text(const std::filesystem::path& path, const GltfContents& contents)
   }
   std::cout << "\n";
   for (const CookedAsset& asset : contents.assets) {
-    std::cout << "asset \"" << asset.name << "\": source " << asset.source << ", image "
-              << asset.image_width << "x" << asset.image_height << " px, "
+    std::cout << "asset \"" << printable(asset.name) << "\": source " << printable(asset.source)
+              << ", image " << asset.image_width << "x" << asset.image_height << " px, "
               << shortest_text(asset.pixels_per_unit) << " px/unit, pivot "
               << point_text(asset.pivot) << ", measure " << asset.measure << ", tau "
               << shortest_text(asset.tau);
