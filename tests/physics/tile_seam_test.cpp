@@ -6,8 +6,11 @@
 #include "hullcook/box2d.h"
 #include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/cook.h"
+#include "hullcook/core/geometry.h"
 #include "hullcook/runtime.h"
 #include "hullcook/trace/trace.h"
+
+#include "../cli/png_writer.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +19,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <utility>
@@ -143,6 +147,51 @@ TEST(TileSeams, Issue18_NeighboursOpaqueAlongTheirBorderShareItExactly) {
     }
   }
   EXPECT_GT(seams, 20);
+}
+
+// Stop 59, a helper's tilesets: at the default τ and snap, a half tile's top met one side of its
+// cell half a pixel lower than the other (the tracing cuts each corner by half a pixel, and the
+// simplification kept the cut's point on the border on one side, snapping restored the corner on
+// the other), so two half tiles side by side met with a step; and a 1 px one-way platform along
+// a tile's top was squashed flat by snapping, kept as traced (a triangle) with a warning. The
+// outline is now put on the border before it is simplified, and a point a whole pixel in stays.
+TEST(TileSeams, Stop59_HalfTilesAndOneWayPlatformsMeetTheirCellsBordersExactly) {
+  constexpr int cell = 16, cells = 4;
+  std::vector<std::uint8_t> rgba(std::size_t(cell) * cell * cells * 4, 0);
+  for (int y = 0; y < cell; ++y) {
+    for (int x = 0; x < cell * cells; ++x) {
+      const bool half = x < 2 * cell && y >= cell / 2, platform = x >= 2 * cell && y == 0;
+      if (half || platform) rgba[(std::size_t(y) * cell * cells + x) * 4 + 3] = 255;
+    }
+  }
+  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" / "tile_halves";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "halves.png";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << test::make_png(cell * cells, cell, 6, rgba);
+  }
+  Settings settings;
+  settings.grid = Grid{cell, cell, 0, 0, 1.0};
+  settings.threads = 1;
+  const CookResult result = cook({path}, settings);
+  ASSERT_EQ(result.assets.size(), std::size_t(cells));
+  for (const CookedAsset& asset : result.assets) {
+    SCOPED_TRACE(asset.name);
+    EXPECT_TRUE(asset.warnings.empty()) << asset.warnings.front();
+    const bool half = asset.name == "halves.png/0" || asset.name == "halves.png/1";
+    // y up, the cell's centre at 0: the half spans -8..0, the platform 7..8, each the whole width.
+    const double low = half ? -8 : 7, high = half ? 0 : 8;
+    double area = 0;
+    for (const Ring& hull : asset.levels.at(0).hulls) {
+      area += std::abs(signed_area(hull));
+      for (const Vec2& p : hull) {
+        EXPECT_TRUE(p.x == -8 || p.x == 8) << p.x << ", " << p.y;
+        EXPECT_TRUE(p.y == low || p.y == high) << p.x << ", " << p.y;
+      }
+    }
+    EXPECT_EQ(area, 16 * (high - low));
+  }
 }
 
 struct Slide {

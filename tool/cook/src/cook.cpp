@@ -205,16 +205,23 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings, uns
       simplify = default_simplify(settings.tau.value);
     }
   }
-  TraceSettings tracing = trace_settings(settings, simplify);
+  // A tile's outline is put onto its cell's border before it is simplified: simplified first,
+  // a corner that the tracing cut by half a pixel kept the cut's point on the border and lost the
+  // one beside it, which snapping would have moved there, so that a half tile's top met the
+  // border 0.5 px lower on one side than on the other (a step at the seam with its neighbour).
+  const bool grid_cell = file.sheet && !file.frames;
+  const bool tile = grid_cell && settings.grid && settings.grid->tile_snap;
+  TraceSettings tracing = trace_settings(settings, tile ? 0.0 : simplify);
   tracing.threads = threads;
   TraceResult traced = trace_alpha(image, tracing);
   prepared.regions = std::move(traced.regions);
   prepared.traced_vertices = traced.traced_vertices;
   prepared.warnings = std::move(traced.warnings);
-  const bool grid_cell = file.sheet && !file.frames;
-  if (grid_cell && settings.grid && settings.grid->tile_snap) {
-    prepared.regions = snap_to_cell(prepared.regions, image.width, image.height,
-                                    *settings.grid->tile_snap, file.name, prepared.warnings);
+  if (tile) {
+    prepared.regions =
+        simplify_regions(snap_to_cell(prepared.regions, image.width, image.height,
+                                      *settings.grid->tile_snap, file.name, prepared.warnings),
+                         simplify, threads);
   }
   double scale = 1.0 / settings.pixels_per_unit;
   const Vec2 pivot = pivot_of(file, settings);

@@ -4,15 +4,26 @@
 #include "hullcook/core/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace hullcook {
 namespace {
 
+// Within snap of the border, but for a point a whole number of pixels in, which only a closer
+// snap moves: the traced outline of hard-edged art lies on a half-pixel lattice, and a point a
+// whole pixel in (at the default snap of 1) is the shape's own, as the underside of a 1 px
+// one-way platform or a frame's inner side. Put on the border, it squashed such a tile flat, and
+// the tile was then kept as traced (with a warning) and met its neighbours with steps. A corner
+// that the tracing cut by half a pixel is put back at any snap of 0.5 and more.
+bool near_border(double distance, double snap) {
+  return distance < snap || (distance == snap && distance != std::floor(distance));
+}
+
 double onto_border(double value, double extent, double snap) {
   value = std::clamp(value, 0.0, extent);
-  if (value <= snap) return 0.0;
-  if (value >= extent - snap) return extent;
+  if (near_border(value, snap)) return 0.0;
+  if (near_border(extent - value, snap)) return extent;
   return value;
 }
 

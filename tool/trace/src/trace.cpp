@@ -321,6 +321,32 @@ bool before(const Vec2& a, const Vec2& b) { return a.y != b.y ? a.y < b.y : a.x 
 
 }  // namespace
 
+std::vector<Region> simplify_regions(const std::vector<Region>& regions, double eps,
+                                     unsigned threads) {
+  std::vector<Ring> rings;
+  for (const Region& region : regions) {
+    rings.push_back(region.outer);
+    rings.insert(rings.end(), region.holes.begin(), region.holes.end());
+  }
+  std::vector<Ring> simplified =
+      simplify_rings(rings, nesting_parents(rings, threads), std::max(0.0, eps), threads);
+  std::vector<Region> out(regions.size());
+  std::size_t next = 0;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    out[r].outer = std::move(simplified[next++]);
+    for (std::size_t h = 0; h < regions[r].holes.size(); ++h) {
+      out[r].holes.push_back(std::move(simplified[next++]));
+    }
+    std::rotate(out[r].outer.begin(),
+                std::min_element(out[r].outer.begin(), out[r].outer.end(), before),
+                out[r].outer.end());
+    for (Ring& hole : out[r].holes) {
+      std::rotate(hole.begin(), std::min_element(hole.begin(), hole.end(), before), hole.end());
+    }
+  }
+  return out;
+}
+
 TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   if (image.width < 0 || image.height < 0 ||

@@ -91,6 +91,15 @@ struct TraceResult {
 // Traces an alpha image. Throws InputError if the image's size and data do not agree.
 TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings);
 
+// Simplifies regions that trace_alpha gave with settings.simplify 0 and that were moved since
+// (a tile's outline points put onto its cell's border: see --tile), as trace_alpha simplifies:
+// with error bound eps [px], each ring keeping a subset of its vertices, its orientation and at
+// least 3 vertices, the rings simple, disjoint and nested as before, collinear vertices dropped.
+// The regions and their holes keep their order; each ring starts at its top-left vertex.
+// threads: how many may simplify rings at once; the result is the same for any count.
+std::vector<Region> simplify_regions(const std::vector<Region>& regions, double eps,
+                                     unsigned threads = 1);
+
 // load_alpha() then trace_alpha(); warnings name the file.
 TraceResult trace_image(const std::filesystem::path& path, const TraceSettings& settings);
 
