@@ -270,6 +270,41 @@ TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
   EXPECT_THROW(cook({root / "art"}, settings), InputError);
 }
 
+// Stop 59, a helper's project files: a key given twice in one object (hullcook.json's rule, a
+// sidecar, a physics sidecar) kept its last value silently, where a sprite sheet's duplicate key
+// is refused; and nesting no settings file has is refused before parsing, as a sheet's is.
+TEST_F(ProjectSettings, Stop59_AKeyTwiceInOneObjectIsRefusedNamingIt) {
+  Settings settings;
+  settings.threads = 1;
+  auto expect_refused = [&](const fs::path& file, const std::string& text,
+                            const std::string& problem) {
+    write(file, text);
+    try {
+      cook({root / "art"}, settings);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string() + ": " + problem), std::string::npos)
+          << e.what();
+    }
+    fs::remove(file);
+  };
+  const fs::path project = root / "art/hullcook.json", sidecar = root / "art/hero.hullcook.json",
+                 physics = root / "art/hero.physics.json";
+  expect_refused(project, R"({"assets": [{"match": "*", "tau": 3, "tau": 4}]})",
+                 "the key 'tau' appears twice in one object");
+  expect_refused(project, R"({"assets": [], "assets": [{"match": "*", "tau": 4}]})",
+                 "the key 'assets' appears twice in one object");
+  expect_refused(sidecar, R"({"max_verts": 6, "physics": {"density": 1, "density": 2}})",
+                 "the key 'density' appears twice in one object");
+  expect_refused(physics, R"({"friction": 0.5, "friction": 0.2})",
+                 "the key 'friction' appears twice in one object");
+  expect_refused(project, "{\"assets\": " + std::string(300, '[') + std::string(300, ']') + "}",
+                 "arrays and objects nested deeper than 256 levels");
+  // The same keys in different objects are no duplicates.
+  write(project, R"({"assets": [{"match": "*", "tau": 3}, {"match": "hero*", "tau": 4}]})");
+  EXPECT_NO_THROW(cook({root / "art"}, settings));
+}
+
 // A folder of sprites with alpha and of opaque RGB tiles (keyed with magenta) cooks in one command
 // when a rule gives the tiles their colour key; before, the first tile stopped the cook, and only
 // --color-key for every image could let it through.

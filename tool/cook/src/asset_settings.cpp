@@ -1,12 +1,16 @@
 #include "asset_settings.h"
 
+#include "strict_json.h"
+
 #include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
 
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 namespace hullcook {
@@ -22,11 +26,22 @@ json read_json_object(const std::filesystem::path& path, const char* what) {
     }
     throw InputError(path.string() + ": not a file of " + what);
   }
-  std::ifstream stream(path);
+  std::ifstream stream(path, std::ios::binary);
   if (!stream) throw InputError(path.string() + ": cannot read");
-  json object = json::parse(stream, nullptr, false);
+  const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+  if (stream.bad()) throw InputError(path.string() + ": cannot read");
+  if (nests_deeper_than(text, kDeepestJsonNesting)) {
+    throw InputError(path.string() + ": arrays and objects nested deeper than " +
+                     std::to_string(kDeepestJsonNesting) + " levels");
+  }
+  // A key given twice kept only its last value, silently (a helper's project files, stop 59).
+  std::optional<std::string> duplicate;
+  json object = parse_noting_duplicates<json>(text, duplicate);
   if (object.is_discarded() || !object.is_object()) {
     throw InputError(path.string() + ": not a JSON object of " + what);
+  }
+  if (duplicate) {
+    throw InputError(path.string() + ": the key '" + *duplicate + "' appears twice in one object");
   }
   return object;
 }

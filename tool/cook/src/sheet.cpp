@@ -1,5 +1,7 @@
 #include "sheet.h"
 
+#include "strict_json.h"
+
 #include "hullcook/cook/cook.h"
 #include "hullcook/core/error.h"
 
@@ -24,54 +26,6 @@ using Json = nlohmann::ordered_json;
 
 // Far beyond any atlas, and small enough that sums of two stay within an int.
 constexpr long long kLargestCoordinate = 1 << 29;
-
-// Far beyond any sheet's nesting (TexturePacker and Aseprite nest 4 deep).
-constexpr std::size_t kDeepestNesting = 256;
-
-// Whether text nests arrays and objects deeper than limit (brackets inside strings skipped).
-// Parsed, an ordered_json copies a member's value whole, recursively, when its object grows (a
-// pair with a const key has no non-throwing move): 90,000 levels overflowed the stack (stop 58).
-bool nests_deeper_than(std::string_view text, std::size_t limit) {
-  std::size_t depth = 0;
-  bool in_string = false, escaped = false;
-  for (char c : text) {
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > limit) return true;
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
-    }
-  }
-  return false;
-}
-
-// Parses text, or nothing (discarded) when it is not JSON; sets duplicate to the first key that
-// an object holds twice (the parsed object keeps one of them: a frame would be lost silently).
-Json parse_noting_duplicates(std::string_view text, std::optional<std::string>& duplicate) {
-  std::vector<std::set<std::string>> keys;  // per object open: the keys read so far
-  auto note = [&](int, nlohmann::detail::parse_event_t event, Json& parsed) {
-    using Event = nlohmann::detail::parse_event_t;
-    if (event == Event::object_start) {
-      keys.emplace_back();
-    } else if (event == Event::object_end) {
-      if (!keys.empty()) keys.pop_back();
-    } else if (event == Event::key && !keys.empty() &&
-               !keys.back().insert(parsed.get<std::string>()).second && !duplicate) {
-      duplicate = parsed.get<std::string>();
-    }
-    return true;
-  };
-  return Json::parse(text, note, false);
-}
 
 // Reads the sheet's fields, each error naming the file and where in it.
 class SheetReader {
@@ -259,12 +213,12 @@ Sheet read_sheet(const std::filesystem::path& path, std::uint64_t max_pixels) {
 Sheet parse_sheet(std::string_view text, const std::filesystem::path& path,
                   std::uint64_t max_pixels) {
   const SheetReader reader(path);
-  if (nests_deeper_than(text, kDeepestNesting)) {
-    reader.fail(
-        "", "arrays and objects nested deeper than " + std::to_string(kDeepestNesting) + " levels");
+  if (nests_deeper_than(text, kDeepestJsonNesting)) {
+    reader.fail("", "arrays and objects nested deeper than " + std::to_string(kDeepestJsonNesting) +
+                        " levels");
   }
   std::optional<std::string> duplicate;
-  const Json json = parse_noting_duplicates(text, duplicate);
+  const Json json = parse_noting_duplicates<Json>(text, duplicate);
   if (json.is_discarded() || !json.is_object()) reader.fail("", "not a JSON object");
   if (duplicate) reader.fail("", "the key '" + *duplicate + "' appears twice in one object");
   if (!json.contains("frames") || !json.contains("meta")) {

@@ -1,0 +1,67 @@
+// Reading the JSON that users write (sprite sheets, hullcook.json, NAME.hullcook.json,
+// NAME.physics.json) strictly: an object that holds a key twice keeps only one of them, which
+// lost a sheet's frame or a setting silently, so the readers refuse it; and nesting beyond any
+// such file's is refused before it is parsed.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hullcook {
+
+// Far beyond any sheet's or settings file's nesting (TexturePacker and Aseprite nest 4 deep).
+inline constexpr std::size_t kDeepestJsonNesting = 256;
+
+// Whether text nests arrays and objects deeper than limit (brackets inside strings skipped).
+// Parsed, an ordered_json copies a member's value whole, recursively, when its object grows (a
+// pair with a const key has no non-throwing move): 90,000 levels overflowed the stack (stop 58).
+inline bool nests_deeper_than(std::string_view text, std::size_t limit) {
+  std::size_t depth = 0;
+  bool in_string = false, escaped = false;
+  for (char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return false;
+}
+
+// Parses text, or nothing (discarded) when it is not JSON; sets duplicate to the first key that
+// an object holds twice (the parsed object keeps one of them).
+template <typename Json>
+Json parse_noting_duplicates(std::string_view text, std::optional<std::string>& duplicate) {
+  std::vector<std::set<std::string>> keys;  // per object open: the keys read so far
+  auto note = [&](int, nlohmann::detail::parse_event_t event, Json& parsed) {
+    using Event = nlohmann::detail::parse_event_t;
+    if (event == Event::object_start) {
+      keys.emplace_back();
+    } else if (event == Event::object_end) {
+      if (!keys.empty()) keys.pop_back();
+    } else if (event == Event::key && !keys.empty() &&
+               !keys.back().insert(parsed.template get<std::string>()).second && !duplicate) {
+      duplicate = parsed.template get<std::string>();
+    }
+    return true;
+  };
+  return Json::parse(text, note, false);
+}
+
+}  // namespace hullcook
