@@ -149,6 +149,20 @@ class ProjectSettings : public ::testing::Test {
 
   static void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
+  // Writes text to file and expects the cook of art/ refused, naming the file and the problem.
+  void expect_refused(const fs::path& file, const std::string& text, const std::string& problem) {
+    write(file, text);
+    Settings settings;
+    settings.threads = 1;
+    try {
+      cook({root / "art"}, settings);
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+    }
+  }
+
   static const CookedAsset& named(const CookResult& result, const std::string& name) {
     for (const CookedAsset& asset : result.assets) {
       if (asset.name == name) return asset;
@@ -243,17 +257,6 @@ TEST_F(ProjectSettings, Issue18_TheSettingsFilesAreDependencies) {
 TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
   Settings settings;
   settings.threads = 1;
-  auto expect_refused = [&](const fs::path& file, const std::string& text,
-                            const std::string& problem) {
-    write(file, text);
-    try {
-      cook({root / "art"}, settings);
-      ADD_FAILURE() << text << " was accepted";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
-    }
-  };
   const fs::path project = root / "art/hullcook.json", sidecar = root / "art/hero.hullcook.json";
   expect_refused(project, "{\"assets\": [", "not a JSON object");
   expect_refused(project, R"({"asset": []})", "unknown key 'asset'");
@@ -276,30 +279,24 @@ TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
 TEST_F(ProjectSettings, Stop59_AKeyTwiceInOneObjectIsRefusedNamingIt) {
   Settings settings;
   settings.threads = 1;
-  auto expect_refused = [&](const fs::path& file, const std::string& text,
-                            const std::string& problem) {
-    write(file, text);
-    try {
-      cook({root / "art"}, settings);
-      ADD_FAILURE() << text << " was accepted";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(file.string() + ": " + problem), std::string::npos)
-          << e.what();
-    }
+  auto expect_refused_once = [&](const fs::path& file, const std::string& text,
+                                 const std::string& problem) {
+    expect_refused(file, text, ": " + problem);
     fs::remove(file);
   };
   const fs::path project = root / "art/hullcook.json", sidecar = root / "art/hero.hullcook.json",
                  physics = root / "art/hero.physics.json";
-  expect_refused(project, R"({"assets": [{"match": "*", "tau": 3, "tau": 4}]})",
-                 "the key 'tau' appears twice in one object");
-  expect_refused(project, R"({"assets": [], "assets": [{"match": "*", "tau": 4}]})",
-                 "the key 'assets' appears twice in one object");
-  expect_refused(sidecar, R"({"max_verts": 6, "physics": {"density": 1, "density": 2}})",
-                 "the key 'density' appears twice in one object");
-  expect_refused(physics, R"({"friction": 0.5, "friction": 0.2})",
-                 "the key 'friction' appears twice in one object");
-  expect_refused(project, "{\"assets\": " + std::string(300, '[') + std::string(300, ']') + "}",
-                 "arrays and objects nested deeper than 256 levels");
+  expect_refused_once(project, R"({"assets": [{"match": "*", "tau": 3, "tau": 4}]})",
+                      "the key 'tau' appears twice in one object");
+  expect_refused_once(project, R"({"assets": [], "assets": [{"match": "*", "tau": 4}]})",
+                      "the key 'assets' appears twice in one object");
+  expect_refused_once(sidecar, R"({"max_verts": 6, "physics": {"density": 1, "density": 2}})",
+                      "the key 'density' appears twice in one object");
+  expect_refused_once(physics, R"({"friction": 0.5, "friction": 0.2})",
+                      "the key 'friction' appears twice in one object");
+  expect_refused_once(project,
+                      "{\"assets\": " + std::string(300, '[') + std::string(300, ']') + "}",
+                      "arrays and objects nested deeper than 256 levels");
   // The same keys in different objects are no duplicates.
   write(project, R"({"assets": [{"match": "*", "tau": 3}, {"match": "hero*", "tau": 4}]})");
   EXPECT_NO_THROW(cook({root / "art"}, settings));
