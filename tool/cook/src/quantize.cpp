@@ -377,7 +377,14 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
 }  // namespace
 
 void bundle_asset_error(const CookedAsset& asset, const std::string& problem) {
-  throw OutputError("bundle: asset '" + asset.name + "': " + problem);
+  // A name too long for the bundle is shown by its start: a sheet's frame named by 70 KB of
+  // text was repeated whole in the message (a helper's sheets, stop 59).
+  constexpr std::size_t kShown = 120;
+  const std::string shown =
+      asset.name.size() <= kShown
+          ? asset.name
+          : asset.name.substr(0, kShown) + "... (" + std::to_string(asset.name.size()) + " bytes)";
+  throw OutputError("bundle: asset '" + shown + "': " + problem);
 }
 
 QuantizedAsset quantize_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
