@@ -149,6 +149,32 @@ TEST(TileSeams, Issue18_NeighboursOpaqueAlongTheirBorderShareItExactly) {
   EXPECT_GT(seams, 20);
 }
 
+// A row of `cells` square tiles of `cell` px, opaque where opaque(x, y) says (x across the whole
+// row), written as an RGBA PNG under the build's test-scratch; returns its path.
+template <typename Opaque>
+std::filesystem::path write_tile_row(const std::string& name, int cell, int cells, Opaque opaque) {
+  std::vector<std::uint8_t> rgba(std::size_t(cell) * cell * cells * 4, 0);
+  for (int y = 0; y < cell; ++y) {
+    for (int x = 0; x < cell * cells; ++x) {
+      if (opaque(x, y)) rgba[(std::size_t(y) * cell * cells + x) * 4 + 3] = 255;
+    }
+  }
+  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" / name;
+  std::filesystem::create_directories(dir);
+  const auto path = dir / (name + ".png");
+  std::ofstream out(path, std::ios::binary);
+  out << test::make_png(cell * cells, cell, 6, rgba);
+  return path;
+}
+
+// A cook of a row of tiles, as --grid CELLxCELL --tile (snap 1) with one thread.
+Settings tile_settings(int cell) {
+  Settings settings;
+  settings.grid = Grid{cell, cell, 0, 0, 1.0};
+  settings.threads = 1;
+  return settings;
+}
+
 // Stop 59, a helper's tilesets: at the default τ and snap, a half tile's top met one side of its
 // cell half a pixel lower than the other (the tracing cuts each corner by half a pixel, and the
 // simplification kept the cut's point on the border on one side, snapping restored the corner on
@@ -157,24 +183,11 @@ TEST(TileSeams, Issue18_NeighboursOpaqueAlongTheirBorderShareItExactly) {
 // outline is now put on the border before it is simplified, and a point a whole pixel in stays.
 TEST(TileSeams, Stop59_HalfTilesAndOneWayPlatformsMeetTheirCellsBordersExactly) {
   constexpr int cell = 16, cells = 4;
-  std::vector<std::uint8_t> rgba(std::size_t(cell) * cell * cells * 4, 0);
-  for (int y = 0; y < cell; ++y) {
-    for (int x = 0; x < cell * cells; ++x) {
-      const bool half = x < 2 * cell && y >= cell / 2, platform = x >= 2 * cell && y == 0;
-      if (half || platform) rgba[(std::size_t(y) * cell * cells + x) * 4 + 3] = 255;
-    }
-  }
-  const auto dir = std::filesystem::path(HULLCOOK_BINARY_DIR) / "test-scratch" / "tile_halves";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "halves.png";
-  {
-    std::ofstream out(path, std::ios::binary);
-    out << test::make_png(cell * cells, cell, 6, rgba);
-  }
-  Settings settings;
-  settings.grid = Grid{cell, cell, 0, 0, 1.0};
-  settings.threads = 1;
-  const CookResult result = cook({path}, settings);
+  const auto path = write_tile_row("halves", cell, cells, [&](int x, int y) {
+    const bool half = x < 2 * cell && y >= cell / 2, platform = x >= 2 * cell && y == 0;
+    return half || platform;
+  });
+  const CookResult result = cook({path}, tile_settings(cell));
   ASSERT_EQ(result.assets.size(), std::size_t(cells));
   for (const CookedAsset& asset : result.assets) {
     SCOPED_TRACE(asset.name);
@@ -191,6 +204,49 @@ TEST(TileSeams, Stop59_HalfTilesAndOneWayPlatformsMeetTheirCellsBordersExactly) 
       }
     }
     EXPECT_EQ(area, 16 * (high - low));
+  }
+}
+
+// Stop 59, the same helper's slopes: the two tiles of a 2:1 slope met their shared border half a
+// pixel apart (the tracing's half-pixel corner cut lay on the slope's line and was dropped with
+// collinear points before snapping), and a 45° slope's foot, where the outline meets the border
+// at a shallow angle, could be simplified off the border. Points stay until snapped, and points
+// on the border stay.
+TEST(TileSeams, Stop59_SlopesMeetTheirNeighboursAtTheSameHeight) {
+  constexpr int cell = 16, cells = 3;
+  const auto path = write_tile_row("slopes", cell, cells, [&](int x, int y) {
+    const int local = x % cell;
+    return x < cell       ? 2 * y >= 2 * cell - local - 1  // 2:1, low half
+           : x < 2 * cell ? 2 * y >= cell - local - 1      // 2:1, high half
+                          : y >= cell - 1 - local;         // 45°
+  });
+  Settings settings = tile_settings(cell);
+  for (double tau : {2.0, 4.0}) {
+    SCOPED_TRACE("tau " + std::to_string(tau));
+    settings.tau = Tolerance{tau, false};
+    const CookResult result = cook({path}, settings);
+    ASSERT_EQ(result.assets.size(), std::size_t(cells));
+    // The highest hull point on a side of a tile (y up, the cell's centre at 0).
+    auto top_at = [&](std::size_t tile, double side) {
+      double top = -1e9;
+      for (const Ring& hull : result.assets[tile].levels.at(0).hulls) {
+        for (const Vec2& p : hull) {
+          if (p.x == side) top = std::max(top, p.y);
+        }
+      }
+      return top;
+    };
+    EXPECT_EQ(top_at(0, 8), 0.0);
+    EXPECT_EQ(top_at(1, -8), 0.0);
+    // The 45° tile covers its bottom border whole.
+    double covered = 0;
+    for (const Ring& hull : result.assets[2].levels.at(0).hulls) {
+      for (std::size_t i = 0; i < hull.size(); ++i) {
+        const Vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+        if (a.y == -8 && b.y == -8) covered += std::abs(b.x - a.x);
+      }
+    }
+    EXPECT_EQ(covered, 16.0);
   }
 }
 

@@ -212,16 +212,25 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings, uns
   const bool grid_cell = file.sheet && !file.frames;
   const bool tile = grid_cell && settings.grid && settings.grid->tile_snap;
   TraceSettings tracing = trace_settings(settings, tile ? 0.0 : simplify);
+  // As traced, collinear points too: a corner's half-pixel cut on a 2:1 slope's line was dropped
+  // with them, and the slope met its cell's border half a pixel above its neighbour's.
+  tracing.keep_collinear = tile;
   tracing.threads = threads;
   TraceResult traced = trace_alpha(image, tracing);
   prepared.regions = std::move(traced.regions);
   prepared.traced_vertices = traced.traced_vertices;
   prepared.warnings = std::move(traced.warnings);
   if (tile) {
+    // Points on the border stay: simplified away, a corner where the outline leaves the border
+    // at a shallow angle (a 45° slope's foot) left the border uncovered there.
+    const double width = image.width, height = image.height;
+    const std::function<bool(Vec2)> on_border = [width, height](Vec2 p) {
+      return p.x == 0 || p.x == width || p.y == 0 || p.y == height;
+    };
     prepared.regions =
         simplify_regions(snap_to_cell(prepared.regions, image.width, image.height,
                                       *settings.grid->tile_snap, file.name, prepared.warnings),
-                         simplify, threads);
+                         simplify, threads, on_border);
   }
   double scale = 1.0 / settings.pixels_per_unit;
   const Vec2 pivot = pivot_of(file, settings);

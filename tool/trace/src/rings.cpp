@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -118,8 +119,9 @@ class Simplifier {
  public:
   // Each ring is first simplified on its own, on up to threads threads (the rings' results do
   // not depend on each other).
-  Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads)
-      : rings_(rings), eps_(eps), threads_(threads) {
+  Simplifier(const std::vector<Ring>& rings, double eps, unsigned threads,
+             const std::function<bool(Vec2)>& pinned)
+      : rings_(rings), eps_(eps), threads_(threads), pinned_(pinned) {
     keep_.resize(rings.size());
     boxes_.resize(rings.size());
     const bool threaded = threads > 1 && rings.size() >= kItemsWorthAThread;
@@ -213,8 +215,22 @@ class Simplifier {
     }
     const int b = from_a.index();
     keep_[r][a] = keep_[r][b] = 1;
-    douglas_peucker(r, a, b, stack);
-    douglas_peucker(r, b, a, stack);
+    if (!pinned_) {
+      douglas_peucker(r, a, b, stack);
+      douglas_peucker(r, b, a, stack);
+    } else {
+      // Pinned vertices are kept; the chains between kept vertices are simplified.
+      for (int i = 0; i < n; ++i) {
+        if (pinned_(ring[i])) keep_[r][i] = 1;
+      }
+      for (int i = a, steps = 0; steps < n;) {
+        int j = (i + 1) % n;
+        ++steps;
+        while (!keep_[r][j]) j = (j + 1) % n, ++steps;
+        douglas_peucker(r, i, j, stack);
+        i = j;
+      }
+    }
     if (std::count(keep_[r].begin(), keep_[r].end(), 1) < 3) {
       // Never collapse a ring: keep its vertex farthest from the chord.
       int m = farthest_interior({r, a, b});
@@ -478,6 +494,7 @@ class Simplifier {
   const std::vector<Ring>& rings_;
   double eps_;
   unsigned threads_;
+  const std::function<bool(Vec2)>& pinned_;  // vertices kept whatever eps (empty: none)
   std::vector<std::vector<char>> keep_;
   // Per ring of at least kBlockedRange vertices: the tree of its blocks' boxes.
   std::vector<BoxTree> boxes_;
@@ -722,8 +739,9 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
 }
 
 std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
-                                 double eps, unsigned threads) {
-  Simplifier simplifier(rings, eps, threads);
+                                 double eps, unsigned threads,
+                                 const std::function<bool(Vec2)>& pinned) {
+  Simplifier simplifier(rings, eps, threads, pinned);
   std::vector<Ring> result;
   while (true) {
     simplifier.untangle();

@@ -4,6 +4,7 @@
 #include "hullcook/core/polygon.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace hullcook::trace_detail {
@@ -27,7 +28,10 @@ std::vector<int> nesting_parents(const std::vector<Ring>& rings, unsigned thread
 // at least 3 vertices and its orientation. parents is nesting_parents(rings).
 // Also removes collinear vertices (which does not move the outline). eps = 0 only does that.
 // threads: how many may simplify rings at once; the result is the same for any count.
+// pinned, when given, names vertices kept whatever eps (a tile's outline on its cell's border);
+// without_collinear still drops one that lies straight between its neighbours.
 std::vector<Ring> simplify_rings(const std::vector<Ring>& rings, const std::vector<int>& parents,
-                                 double eps, unsigned threads = 1);
+                                 double eps, unsigned threads = 1,
+                                 const std::function<bool(Vec2)>& pinned = {});
 
 }  // namespace hullcook::trace_detail

@@ -322,14 +322,14 @@ bool before(const Vec2& a, const Vec2& b) { return a.y != b.y ? a.y < b.y : a.x 
 }  // namespace
 
 std::vector<Region> simplify_regions(const std::vector<Region>& regions, double eps,
-                                     unsigned threads) {
+                                     unsigned threads, const std::function<bool(Vec2)>& pinned) {
   std::vector<Ring> rings;
   for (const Region& region : regions) {
     rings.push_back(region.outer);
     rings.insert(rings.end(), region.holes.begin(), region.holes.end());
   }
   std::vector<Ring> simplified =
-      simplify_rings(rings, nesting_parents(rings, threads), std::max(0.0, eps), threads);
+      simplify_rings(rings, nesting_parents(rings, threads), std::max(0.0, eps), threads, pinned);
   std::vector<Region> out(regions.size());
   std::size_t next = 0;
   for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -415,7 +415,10 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings) 
     if (kept[r]) kept_parents.push_back(parents[r] >= 0 ? new_index[parents[r]] : -1);
   }
   std::vector<Ring> simplified =
-      simplify_rings(kept_rings, kept_parents, std::max(0.0, settings.simplify), settings.threads);
+      settings.keep_collinear && !(settings.simplify > 0)
+          ? kept_rings
+          : simplify_rings(kept_rings, kept_parents, std::max(0.0, settings.simplify),
+                           settings.threads);
 
   std::vector<int> region_of(simplified.size(), -1);
   for (std::size_t r = 0; r < simplified.size(); ++r) {

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ struct TraceSettings {
   double min_blob_area = 4.0;  // [px²] blobs with a smaller traced area are dropped
   double min_hole_area = 4.0;  // [px²] holes with a smaller traced area are filled
   double simplify = 0.5;       // [px] error bound of ring simplification; 0 = none
+  // With simplify 0: the rings exactly as traced, collinear vertices kept (else dropped), for a
+  // caller that moves vertices before it simplifies them (simplify_regions).
+  bool keep_collinear = false;
   std::uint64_t max_pixels = 64ull * 1000 * 1000;  // larger images are refused before decoding
   unsigned threads = 1;  // how many may simplify rings at once; the result is the same for any
 };
@@ -96,9 +100,11 @@ TraceResult trace_alpha(const AlphaImage& image, const TraceSettings& settings);
 // with error bound eps [px], each ring keeping a subset of its vertices, its orientation and at
 // least 3 vertices, the rings simple, disjoint and nested as before, collinear vertices dropped.
 // The regions and their holes keep their order; each ring starts at its top-left vertex.
-// threads: how many may simplify rings at once; the result is the same for any count.
+// pinned, when given, names vertices kept whatever eps (but for one straight between its
+// neighbours). threads: how many may simplify rings at once; the result is the same for any.
 std::vector<Region> simplify_regions(const std::vector<Region>& regions, double eps,
-                                     unsigned threads = 1);
+                                     unsigned threads = 1,
+                                     const std::function<bool(Vec2)>& pinned = {});
 
 // load_alpha() then trace_alpha(); warnings name the file.
 TraceResult trace_image(const std::filesystem::path& path, const TraceSettings& settings);
