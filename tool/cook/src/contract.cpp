@@ -100,32 +100,6 @@ double accurate_area(const Region& region) { return 0.5 * accurate_twice_area(re
 
 // --- The components: valid regions, no slivers. --------------------------------------------
 
-// Whether ring is a strictly convex counter-clockwise polygon: every turn strictly left (exact
-// predicate) and the edges' directions turning once round, so that x and y each change their
-// direction at most twice. Such a ring is simple, and its concavity 0 under every measure.
-bool is_strictly_convex_ccw(const Ring& ring) {
-  const std::size_t n = ring.size();
-  if (n < 3) return false;
-  int x_changes = 0, y_changes = 0, last_x = 0, last_y = 0, first_x = 0, first_y = 0;
-  auto note = [](double delta, int& last, int& first, int& changes) {
-    const int sign = (delta > 0) - (delta < 0);
-    if (sign == 0) return;
-    if (last != 0 && sign != last) ++changes;
-    if (first == 0) first = sign;
-    last = sign;
-  };
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
-    if (orientation(a, b, c) <= 0) return false;
-    note(b.x - a.x, last_x, first_x, x_changes);
-    note(b.y - a.y, last_y, first_y, y_changes);
-  }
-  // The change from the last edge back to the first.
-  if (last_x != 0 && first_x != last_x) ++x_changes;
-  if (last_y != 0 && first_y != last_y) ++y_changes;
-  return x_changes <= 2 && y_changes <= 2;
-}
-
 // convex: the component has no hole and is_strictly_convex_ccw. Unless convex, sets cleaned to
 // the component without repeated or collinear vertices (what is measured); a convex one is
 // measured as it is.

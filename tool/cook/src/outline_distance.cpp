@@ -202,20 +202,8 @@ OutlineDistance::OutlineDistance(const std::vector<const Region*>& components) {
     }
   }
   if (edges_.empty()) return;
-  if (components.size() == 1 && components[0]->holes.empty()) {
-    // Left turns alone allow a ring that winds more than once (a star polygon): the turning sums
-    // to 2π for a convex ring, to 4π or more otherwise.
-    const Ring& ring = components[0]->outer;
-    const std::size_t n = ring.size();
-    bool convex = n >= 3;
-    double turning = 0;
-    for (std::size_t i = 0; i < n && convex; ++i) {
-      const Vec2 before = ring[i == 0 ? n - 1 : i - 1], at = ring[i], after = ring[(i + 1) % n];
-      if (orientation(before, at, after) <= 0) convex = false;
-      turning += std::atan2(cross(at - before, after - at), glm::dot(at - before, after - at));
-    }
-    convex_ = convex && turning < 3 * std::acos(-1.0);
-  }
+  convex_ = components.size() == 1 && components[0]->holes.empty() &&
+            is_strictly_convex_ccw(components[0]->outer);
 
   Vec2 low{kInfinity, kInfinity}, high{-kInfinity, -kInfinity};
   for (const Edge& e : edges_) {

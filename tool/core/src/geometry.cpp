@@ -294,6 +294,29 @@ Ring convex_hull(const Ring& points) {
   return hull;
 }
 
+bool is_strictly_convex_ccw(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  int x_changes = 0, y_changes = 0, last_x = 0, last_y = 0, first_x = 0, first_y = 0;
+  auto note = [](double delta, int& last, int& first, int& changes) {
+    const int sign = (delta > 0) - (delta < 0);
+    if (sign == 0) return;
+    if (last != 0 && sign != last) ++changes;
+    if (first == 0) first = sign;
+    last = sign;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
+    if (orientation(a, b, c) <= 0) return false;
+    note(b.x - a.x, last_x, first_x, x_changes);
+    note(b.y - a.y, last_y, first_y, y_changes);
+  }
+  // The change from the last edge back to the first.
+  if (last_x != 0 && first_x != last_x) ++x_changes;
+  if (last_y != 0 && first_y != last_y) ++y_changes;
+  return x_changes <= 2 && y_changes <= 2;
+}
+
 int ring_orientation(const Ring& ring) {
   // The lowest (then leftmost) vertex is a vertex of the convex hull, so the ring turns there the
   // way it runs. The sign of the floating-point area is not enough: a sliver's area rounds to zero

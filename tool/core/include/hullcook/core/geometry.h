@@ -47,6 +47,12 @@ void simple_polygon_hull_indices(const Ring& ring, std::size_t hull_vertex,
 // turn at its lowest vertex, or fewer than 3 vertices).
 int ring_orientation(const Ring& ring);
 
+// Whether ring is a strictly convex counter-clockwise polygon: every turn strictly left (exact
+// predicate) and the edges' directions turning once round, so that x and y each change their
+// direction at most twice (a ring turning left everywhere but winding twice, as a pentagram's
+// vertices in star order, changes each four times). Such a ring is simple.
+bool is_strictly_convex_ccw(const Ring& ring);
+
 enum class Location { outside, boundary, inside };
 
 // Where p lies with respect to the closed ring (either orientation), exactly.
