@@ -30,18 +30,12 @@ json read_json_object(const std::filesystem::path& path, const char* what) {
   if (!stream) throw InputError(path.string() + ": cannot read");
   const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
   if (stream.bad()) throw InputError(path.string() + ": cannot read");
-  if (nests_deeper_than(text, kDeepestJsonNesting)) {
-    throw InputError(path.string() + ": arrays and objects nested deeper than " +
-                     std::to_string(kDeepestJsonNesting) + " levels");
-  }
   // A key given twice kept only its last value, silently (a helper's project files, stop 59).
-  std::optional<std::string> duplicate;
-  json object = parse_noting_duplicates<json>(text, duplicate);
+  std::string refusal;
+  json object = parse_strict<json>(text, refusal);
+  if (!refusal.empty()) throw InputError(path.string() + ": " + refusal);
   if (object.is_discarded() || !object.is_object()) {
     throw InputError(path.string() + ": not a JSON object of " + what);
-  }
-  if (duplicate) {
-    throw InputError(path.string() + ": the key '" + *duplicate + "' appears twice in one object");
   }
   return object;
 }

@@ -213,14 +213,10 @@ Sheet read_sheet(const std::filesystem::path& path, std::uint64_t max_pixels) {
 Sheet parse_sheet(std::string_view text, const std::filesystem::path& path,
                   std::uint64_t max_pixels) {
   const SheetReader reader(path);
-  if (nests_deeper_than(text, kDeepestJsonNesting)) {
-    reader.fail("", "arrays and objects nested deeper than " + std::to_string(kDeepestJsonNesting) +
-                        " levels");
-  }
-  std::optional<std::string> duplicate;
-  const Json json = parse_noting_duplicates<Json>(text, duplicate);
+  std::string refusal;
+  const Json json = parse_strict<Json>(text, refusal);
+  if (!refusal.empty()) reader.fail("", refusal);
   if (json.is_discarded() || !json.is_object()) reader.fail("", "not a JSON object");
-  if (duplicate) reader.fail("", "the key '" + *duplicate + "' appears twice in one object");
   if (!json.contains("frames") || !json.contains("meta")) {
     reader.fail("", "not a sprite sheet (TexturePacker or Aseprite JSON: 'frames' and 'meta')");
   }

@@ -64,4 +64,22 @@ Json parse_noting_duplicates(std::string_view text, std::optional<std::string>& 
   return Json::parse(text, note, false);
 }
 
+// Parses text as a JSON object strictly: refusal is set (and nothing parsed) when it nests deeper
+// than kDeepestJsonNesting, or when it is an object holding a key twice; the caller refuses what
+// is discarded or no object, as its file's kind says.
+template <typename Json>
+Json parse_strict(std::string_view text, std::string& refusal) {
+  if (nests_deeper_than(text, kDeepestJsonNesting)) {
+    refusal =
+        "arrays and objects nested deeper than " + std::to_string(kDeepestJsonNesting) + " levels";
+    return Json(nlohmann::detail::value_t::discarded);
+  }
+  std::optional<std::string> duplicate;
+  Json json = parse_noting_duplicates<Json>(text, duplicate);
+  if (duplicate && json.is_object()) {
+    refusal = "the key '" + *duplicate + "' appears twice in one object";
+  }
+  return json;
+}
+
 }  // namespace hullcook
