@@ -617,6 +617,35 @@ TEST(Bundle, AHullSmallerThanAQuantumBesideOneSpanningTheGridIsRefusedWithTheWay
   }
 }
 
+// Stop 60, a helper's hunt: `cook --grid 50 --name N`, N 65,534 bytes long, renames the assets
+// N/0, N/1, ... after a BundleStream spilled their levels. Names were checked only when added,
+// and the bundle went out with a 16-bit name length wrapped (exit 0; `inspect` refused it). The
+// names a bundle is written with are checked.
+TEST(Bundle, Stop60_AStreamedAssetRenamedLongerThanTheFormatHoldsIsRefused) {
+  std::vector<CookedAsset> assets = {test::make_asset("a", {{1.0, {test::rectangle(0, 0, 1, 1)}}}),
+                                     test::make_asset("b", {{1.0, {test::rectangle(0, 0, 2, 1)}}})};
+  BundleStream stream;
+  stream.add(0, assets[0]);
+  stream.add(1, assets[1]);
+  auto write = [&] {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::tmpfile(), &std::fclose);
+    ASSERT_NE(file, nullptr);
+    stream.write(file.get(), assets, {0, 1});
+  };
+  assets[1].name = std::string(0xFFFF, 'n') + "/0";
+  try {
+    write();
+    ADD_FAILURE() << "a name of 65,537 bytes was written";
+  } catch (const OutputError& error) {
+    EXPECT_NE(std::string(error.what()).find("name longer than 65535 bytes"), std::string::npos)
+        << error.what();
+  }
+  assets[1].name = std::string(0xFFFF, 'n');  // the longest the format holds
+  EXPECT_NO_THROW(write());
+  assets[1].name.clear();
+  EXPECT_THROW(write(), OutputError);
+}
+
 TEST(Bundle, WriterRefusesWhatItCannotStore) {
   auto box = [](const std::string& name) {
     return test::make_asset(name, {{1.0, {test::rectangle(0, 0, 1, 1)}}});

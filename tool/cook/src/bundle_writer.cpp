@@ -32,9 +32,15 @@ using format::LevelRecord;
 using format::PhysicsRecord;
 using format::VertexRecord;
 
-void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
+// Asked where the bundle is laid out, of the names it is laid out with: a stream's assets are
+// renamed (cook --name) after their levels were spilled, and a name made longer than the 16-bit
+// length then went out truncated, with exit 0 (stop 60).
+void check_name(const CookedAsset& asset) {
   if (asset.name.empty()) bundle_asset_error(asset, "empty name");
   if (asset.name.size() > 0xFFFF) bundle_asset_error(asset, "name longer than 65535 bytes");
+}
+
+void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
   if (asset.image_width < 0 || asset.image_width > 0xFFFF || asset.image_height < 0 ||
       asset.image_height > 0xFFFF) {
     bundle_asset_error(asset, "its image (" + asset.source + ") is " +
@@ -178,6 +184,7 @@ BundleHeader assemble(const std::vector<CookedAsset>& assets, const RecordSource
   bool any_physics = false;
   std::size_t level_count = 0, hull_count = 0, vertex_count = 0, strings_size = 0;
   for (std::size_t i = 0; i < assets.size(); ++i) {
+    check_name(assets[i]);
     if (!names.insert(assets[i].name).second)
       bundle_asset_error(assets[i], "two assets have this name");
     const AssetShape& shape = source.shape(i);
