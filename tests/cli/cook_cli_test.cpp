@@ -2,6 +2,7 @@
 // no output file.
 #include "png_writer.h"
 #include "run_command.h"
+#include "test_directory.h"
 
 #include "hullcook/core/error.h"
 
@@ -64,6 +65,36 @@ std::string opaque_square_png() {
   for (int y = 4; y < 12; ++y)
     for (int x = 4; x < 12; ++x) pixels[(y * 16 + x) * 4 + 3] = 255;
   return make_png(16, 16, 6, pixels);
+}
+
+// Stop 60, a helper's hunt: a cook of 3,000 tiny images at --threads 512 in an address space of
+// 4 GB (ulimit -v) aborted ("terminate called without an active exception", exit 134): the
+// system refused a thread, and the exception left the threads started unjoined. A refused thread
+// is one fewer worker now, as in parallel_for, and the bundle is the one thread's.
+TEST_F(CookCli, Stop60_AThreadTheSystemRefusesIsOneWorkerFewer) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: ulimit -v stops it";
+#else
+  for (int i = 0; i < 300; ++i) {
+    write("s" + std::to_string(1000 + i) + ".png", opaque_square_png());
+  }
+  const fs::path one = directory / "one.hcb", many = directory / "many.hcb";
+  ASSERT_EQ(run_hullcook("cook " + directory.string() + " -o " + one.string() + " -q --threads 1")
+                .exit_code,
+            0);
+  // 8 MB stacks in 1 GB: a hundred threads or so, of the 300 asked.
+  const std::string limited = "(ulimit -s 8192 && ulimit -v 1000000 && " +
+                              std::string(HULLCOOK_EXE) + " cook " + directory.string() + " -o " +
+                              many.string() + " -q --threads 300) 2>&1";
+  FILE* pipe = popen(limited.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output(4096, '\0');
+  output.resize(std::fread(output.data(), 1, output.size(), pipe));
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal: " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+  EXPECT_TRUE(test::read_bytes(many) == test::read_bytes(one));
+#endif
 }
 
 TEST_F(CookCli, TruncatedPng) {

@@ -38,6 +38,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 namespace hullcook {
@@ -715,7 +716,15 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
     }
   };
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  for (unsigned t = 1; t < threads; ++t) {
+    // A thread the system refuses (a limit on threads or address space) is one fewer worker, as
+    // in parallel_for: the exception left the threads started unjoined, and the process aborted.
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   work();
   for (std::thread& thread : pool) thread.join();
   for (const std::exception_ptr& error : errors) {
