@@ -97,6 +97,22 @@ TEST_F(CookCli, Stop60_AThreadTheSystemRefusesIsOneWorkerFewer) {
 #endif
 }
 
+// Stop 60, a helper's hunt: an output name of 235 to 255 bytes, which the file system takes, was
+// refused "File name too long": the temporary beside it adds about 20 bytes to the name.
+TEST_F(CookCli, Stop60_AnOutputNameOfTheLongestTheFileSystemTakesIsWritten) {
+  const fs::path input = write("square.png", opaque_square_png());
+  for (std::size_t length : {230, 255}) {
+    const fs::path output = directory / (std::string(length - 4, 'a') + ".hcb");
+    const auto result = run_hullcook("cook " + input.string() + " -o " + output.string() + " -q");
+    EXPECT_EQ(result.exit_code, 0) << length << ": " << result.output;
+    EXPECT_TRUE(fs::is_regular_file(output)) << length;
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(directory)) files += entry.is_regular_file();
+    EXPECT_EQ(files, 2u) << length << ": a temporary was left behind";
+    fs::remove(output);
+  }
+}
+
 TEST_F(CookCli, TruncatedPng) {
   std::string png = opaque_square_png();
   expect_bad_input(write("truncated.png", png.substr(0, png.size() / 2)), "truncated.png");

@@ -50,9 +50,13 @@ class PendingTemporary {
   std::atomic<char*>* slot_ = nullptr;
 };
 
-// The prefix of path's temporaries: ".NAME.tmp".
+// The prefix of path's temporaries: ".NAME.tmp", NAME cut to the bytes that leave room for the
+// PID and the random number within a file name's 255 bytes: an output named with 235 to 255
+// bytes, which the file system takes, could not be written (stop 60).
 std::string temporary_prefix(const std::filesystem::path& path) {
-  return "." + path.filename().string() + ".tmp";
+  constexpr std::size_t kNameMax = 255, kAround = 1 + 4 + 10 + 1 + 10;  // ".", ".tmp", PID-RANDOM
+  const std::string name = path.filename().string();
+  return "." + name.substr(0, kNameMax - kAround) + ".tmp";
 }
 
 // Removes the temporaries of path that a killed process left: their names are
