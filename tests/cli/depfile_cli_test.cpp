@@ -123,6 +123,29 @@ TEST_F(DepfileCli, WrittenWithTheOutputsOrNotAtAll) {
   EXPECT_FALSE(fs::exists(directory / "out.hcb"));
 }
 
+// Stop 60, a helper's hunt: a ':' in a file name made Make read the depfile as a second rule
+// ("target pattern contains no '%'. Stop."), and a tab split the name in two for Ninja, which then
+// rebuilt every time. Neither can be escaped for both: refused, as a line break is, naming the
+// file, before anything is written.
+TEST_F(DepfileCli, Stop60_ANameWithAColonOrATabIsRefusedNotWrittenUnreadable) {
+  for (const std::string name : {"co:lon.png", "tab\tx.png", "back\\"}) {
+    const fs::path folder = directory / "odd";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    fs::copy_file(kSprites / kSmall, folder / "a.png");
+    const fs::path odd = name == "back\\" ? folder / name / "b.png" : folder / name;
+    fs::create_directories(odd.parent_path());
+    fs::copy_file(kSprites / kSmall, odd);
+    auto result = run_hullcook("cook " + quoted(folder) + " -o " + quoted(directory / "out.hcb") +
+                               " --depfile " + quoted(directory / "out.d") + " -q");
+    EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::usage)) << result.output;
+    EXPECT_NE(result.output.find("a depfile cannot name a path"), std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(directory / "out.d"));
+    EXPECT_FALSE(fs::exists(directory / "out.hcb"));
+  }
+}
+
 // Stop 58, a helper's hostile files: --depfile and --report over a file the cook reads (an image
 // found in a folder, a sidecar) replaced it with exit 0, where -o was refused; and an output that
 // is a pipe or a device was renamed over (--depfile /dev/null, run as root, made it a file).

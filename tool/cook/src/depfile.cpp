@@ -3,16 +3,28 @@
 #include "hullcook/core/error.h"
 
 #include <set>
+#include <utility>
 
 namespace hullcook {
 namespace {
 
+// Make and Ninja escape a space, '#' and '$' alike, and nothing else the same way: a ':' made
+// Make read a second rule ("target pattern contains no '%'"), a tab split the name for Ninja
+// (which then rebuilt every time), and a name ending in '\' escaped the space after it (stop 60).
+// Those are refused, as a line break is.
 std::string escaped(const std::filesystem::path& path) {
-  std::string text;
-  for (char c : path.string()) {
-    if (c == '\n' || c == '\r') {
-      throw UsageError(path.string() + ": a depfile cannot name a path with a line break");
+  const std::string name = path.string();
+  for (const auto& [c, what] : {std::pair{'\n', "a line break"}, std::pair{'\r', "a line break"},
+                                std::pair{':', "a ':'"}, std::pair{'\t', "a tab"}}) {
+    if (name.find(c) != std::string::npos) {
+      throw UsageError(name + ": a depfile cannot name a path with " + what);
     }
+  }
+  if (!name.empty() && name.back() == '\\') {
+    throw UsageError(name + ": a depfile cannot name a path that ends in a backslash");
+  }
+  std::string text;
+  for (char c : name) {
     if (c == ' ' || c == '#') text += '\\';
     if (c == '$') text += '$';
     text += c;
