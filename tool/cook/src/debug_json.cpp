@@ -1,5 +1,7 @@
 #include "hullcook/cook/debug_json.h"
 
+#include "utf8_names.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -7,51 +9,6 @@
 
 namespace hullcook {
 namespace {
-
-// The length of the valid UTF-8 sequence starting at text[i] (shortest form, no surrogates, at
-// most U+10FFFF), or 0.
-std::size_t utf8_sequence_length(const std::string& text, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char lead = byte(i);
-  if (lead < 0x80) return 1;
-  std::size_t length = 0;
-  unsigned char low = 0x80, high = 0xBF;  // the range of the second byte
-  if (lead >= 0xC2 && lead <= 0xDF) {
-    length = 2;
-  } else if (lead >= 0xE0 && lead <= 0xEF) {
-    length = 3;
-    if (lead == 0xE0) low = 0xA0;
-    if (lead == 0xED) high = 0x9F;
-  } else if (lead >= 0xF0 && lead <= 0xF4) {
-    length = 4;
-    if (lead == 0xF0) low = 0x90;
-    if (lead == 0xF4) high = 0x8F;
-  } else {
-    return 0;
-  }
-  if (i + length > text.size()) return 0;
-  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
-  for (std::size_t k = 2; k < length; ++k) {
-    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-  }
-  return length;
-}
-
-std::string valid_utf8(const std::string& text) {
-  std::string result;
-  result.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t length = utf8_sequence_length(text, i);
-    if (length == 0) {
-      result += "\xEF\xBF\xBD";  // U+FFFD
-      ++i;
-    } else {
-      result.append(text, i, length);
-      i += length;
-    }
-  }
-  return result;
-}
 
 class JsonWriter {
  public:
@@ -72,8 +29,7 @@ class JsonWriter {
 
   void integer(std::size_t value) { out_ += std::to_string(value); }
 
-  // Names come from file names, which need not be UTF-8; JSON must be. As in the glTF writer, a
-  // byte that does not start a valid sequence becomes U+FFFD.
+  // Names come from file names, which need not be UTF-8; JSON must be (see utf8_names.h).
   void string(const std::string& raw) {
     const std::string text = valid_utf8(raw);
     out_ += '"';
@@ -142,6 +98,7 @@ class JsonWriter {
 }  // namespace
 
 std::string debug_json(const std::vector<CookedAsset>& assets) {
+  refuse_names_alike_in_utf8(assets, "debug JSON");
   JsonWriter json;
   std::string& out = json.out();
   // A point prints as about 45 bytes: reserved at once, the text is not copied as it grows

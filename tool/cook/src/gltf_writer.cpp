@@ -19,6 +19,7 @@
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
 #include "hullcook/core/geometry.h"
+#include "utf8_names.h"
 
 #include "hullcook/core/error.h"
 #include "hullcook/core/predicates.h"
@@ -664,7 +665,7 @@ json asset_extras(const CookedAsset& asset) {
       {"version", kGltfExtrasVersion},
       {"units", "output units (1 unit = 1 m in glTF)"},
       // The name, not the path given: the bytes must not depend on where the cook ran (issue 19).
-      {"source", asset.name},
+      {"source", valid_utf8(asset.name)},
       {"image_size", json::array({asset.image_width, asset.image_height})},
       {"pixels_per_unit", asset.pixels_per_unit},
       {"pivot", vec2_json(asset.pivot)},
@@ -711,7 +712,7 @@ int add_asset(Document& document, const CookedAsset& cooked) {
   check_finite(cooked);
   const std::optional<CookedAsset> held = held_by_floats(cooked);
   const CookedAsset& asset = held ? *held : cooked;
-  const int node_index = document.add_node({{"name", asset.name}});
+  const int node_index = document.add_node({{"name", valid_utf8(asset.name)}});
   json extras = asset_extras(asset);
   std::optional<Quantization> grid;
   std::optional<CookedAsset> on_grid;  // the asset's hulls as held on the grid, where they differ
@@ -777,6 +778,7 @@ std::string glb_container(const std::string& json_text, const std::string& bin) 
 }  // namespace
 
 std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options) {
+  refuse_names_alike_in_utf8(assets, "glTF");
   if (options.draco && options.meshopt) {
     throw UsageError("--draco and --meshopt compress the same meshes: give one of them");
   }
@@ -797,7 +799,7 @@ std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions
   scene_nodes.reserve(assets.size());
   for (const CookedAsset& asset : assets) scene_nodes.push_back(add_asset(document, asset));
 
-  // Invalid UTF-8 in a name is replaced (U+FFFD) rather than refused: the name is a label.
+  // Names are valid UTF-8 (valid_utf8); any other string is replaced alike.
   std::string text = document.finish(scene_nodes, !options.binary)
                          .dump(-1, ' ', false, json::error_handler_t::replace);
   if (!options.binary) return text;

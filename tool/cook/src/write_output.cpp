@@ -113,7 +113,12 @@ std::vector<OutputFile> output_files(const CookResult& result,
                          stream->write(out, result.assets, result.cooked_index);
                        }});
     } else {
-      files.push_back({path, output_bytes(result, path, settings)});
+      // Named as a streamed bundle's refusal is (output_file.cpp): the writers know no path.
+      try {
+        files.push_back({path, output_bytes(result, path, settings)});
+      } catch (const OutputError& error) {
+        throw OutputError(path.string() + ": cannot write: " + error.what());
+      }
     }
   }
   return files;
