@@ -146,9 +146,17 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
   const fs::path first = directory / "first.bin", second = directory / "second.bin";
   const std::string old_bytes(1000, 'o');
   const std::string new_first(4 << 20, 'a'), new_second(4 << 20, 'b');
+  // The child says when it starts writing, and the kill's delay counts from then: counted from
+  // the fork, on a loaded machine (ctest -j2 beside other work) the child often had not run yet,
+  // and once none of 200 kills landed in a write (stop 60).
   auto write_in_child = [&] {
+    int ready[2];
+    if (pipe(ready) != 0) return pid_t{-1};
     const pid_t pid = fork();
     if (pid == 0) {
+      close(ready[0]);
+      const char byte = 1;
+      if (write(ready[1], &byte, 1) != 1) _exit(4);
       try {
         write_files_atomically({{first, new_first}, {second, new_second}});
       } catch (...) {
@@ -156,6 +164,10 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
       }
       _exit(0);
     }
+    close(ready[1]);
+    char byte = 0;
+    if (pid > 0 && read(ready[0], &byte, 1) != 1) byte = 0;
+    close(ready[0]);
     return pid;
   };
   auto reset = [&] {
