@@ -138,5 +138,21 @@ TEST(Inspect, ReviewNamesThatAreNotUtf8GiveValidJson) {
   EXPECT_EQ(json["assets"][0]["name"], "caf\u00e9/a\ufffdb\ufffd\ufffd.png");
 }
 
+// Stop 60's review: glTF and JSON outputs refuse two names that U+FFFD would make one; a bundle
+// keeps the bytes, and `inspect --json` prints such a bundle (its names as the debug JSON
+// spells them), which the refusal inside the JSON writer had made exit 3.
+TEST(Inspect, Stop60_ABundleOfNamesAlikeInUtf8IsPrintedAsJson) {
+  const fs::path bundle =
+      write("alike.hcb",
+            write_bundle({test::make_asset("x\xfe", {{1.0, {test::rectangle(0, 0, 4, 2)}}}),
+                          test::make_asset("x\xff", {{1.0, {test::rectangle(0, 0, 2, 4)}}})}));
+  const auto result = test::run_hullcook("inspect " + bundle.string() + " --json");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = nlohmann::json::parse(result.output)) << result.output;
+  ASSERT_EQ(json["assets"].size(), 2u);
+  EXPECT_EQ(json["assets"][1]["name"], "x\ufffd");
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -5,7 +5,6 @@
 #include "sample_assets.h"
 
 #include "hullcook/cook/cook.h"
-#include "hullcook/cook/debug_json.h"
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/core/error.h"
 #include "hullcook/core/predicates.h"
@@ -21,7 +20,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <limits>
 #include <set>
 
@@ -518,37 +516,33 @@ TEST(GltfWriter, DegenerateAndClockwiseHullsAreMirroredSafely) {
 
 // Stop 60, a helper's hunt: names are UTF-8 text in glTF and JSON, where a byte that is not
 // becomes U+FFFD, so the fragments of x\xff and x\xfe linked into two assets both named x\uFFFD
-// (exit 0), which a game cannot tell apart; a bundle keeps the bytes. Such names are refused,
-// naming both; one name alone is written with its U+FFFD, as before.
+// (exit 0), which a game cannot tell apart; a bundle keeps the bytes. Such outputs are refused,
+// naming the file and both names; one name alone is written with its U+FFFD, as before.
 TEST(GltfWriter, Stop60_NamesThatUtf8WouldMakeOneAreRefused) {
   CookedAsset first = test::box_asset(), second = test::box_asset();
   first.name = "x\xff", second.name = "x\xfe";
-  for (const auto& write : std::vector<std::function<std::string()>>{
-           [&] {
-             return write_gltf({second, first}, {});
-           },
-           [&] {
-             return write_gltf({second, first}, GltfOptions{true, false});
-           },
-           [&] {
-             return debug_json({second, first});
-           }}) {
+  CookResult result;
+  result.assets = {second, first};
+  for (const char* output : {"x.gltf", "x.glb", "x.json"}) {
     try {
-      write();
-      ADD_FAILURE() << "two assets named x\\uFFFD were written";
+      output_files(result, {output}, Settings{}, {});
+      ADD_FAILURE() << output << ": two assets named x\\uFFFD were written";
     } catch (const OutputError& error) {
       const std::string message = error.what();
+      EXPECT_EQ(message.rfind(std::string(output) + ": cannot write: ", 0), 0u) << message;
       EXPECT_NE(message.find("'x\\xfe' and 'x\\xff' would both be named 'x\xEF\xBF\xBD'"),
                 std::string::npos)
           << message;
     }
   }
+  EXPECT_NO_THROW(output_files(result, {"x.hcb"}, Settings{}, {}));
   second.name = "x\xc3\xbe";  // x\u00FE: valid, kept
+  result.assets = {first, second};
+  EXPECT_NO_THROW(output_files(result, {"x.gltf"}, Settings{}, {}));
   const Parsed parsed = parse(write_gltf({first, second}, {}), false);
   std::set<std::string> names;
   for (const json& node : parsed.root["nodes"]) names.insert(node["name"].get<std::string>());
   EXPECT_EQ(names, (std::set<std::string>{"x\xEF\xBF\xBD", "x\xc3\xbe"}));
-  EXPECT_NO_THROW(debug_json({first, second}));
 }
 
 TEST(GltfWriter, NonFiniteCoordinatesAreRefusedNamingTheAsset) {

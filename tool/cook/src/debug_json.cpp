@@ -98,7 +98,6 @@ class JsonWriter {
 }  // namespace
 
 std::string debug_json(const std::vector<CookedAsset>& assets) {
-  refuse_names_alike_in_utf8(assets, "debug JSON");
   JsonWriter json;
   std::string& out = json.out();
   // A point prints as about 45 bytes: reserved at once, the text is not copied as it grows

@@ -778,7 +778,6 @@ std::string glb_container(const std::string& json_text, const std::string& bin) 
 }  // namespace
 
 std::string write_gltf(const std::vector<CookedAsset>& assets, const GltfOptions& options) {
-  refuse_names_alike_in_utf8(assets, "glTF");
   if (options.draco && options.meshopt) {
     throw UsageError("--draco and --meshopt compress the same meshes: give one of them");
   }

@@ -78,8 +78,8 @@ void refuse_names_alike_in_utf8(const std::vector<CookedAsset>& assets, std::str
     if (!added && *it->second != asset.name) {
       throw OutputError(std::string(format) + ": assets '" + shown(*it->second) + "' and '" +
                         shown(asset.name) + "' would both be named '" + it->first +
-                        "' (names there are UTF-8 text; a byte that is not becomes U+FFFD): give "
-                        "one of them another --name, or write a bundle (.hcb)");
+                        "' (names there are UTF-8 text; a byte that is not becomes U+FFFD): rename "
+                        "one of them, or write a bundle (.hcb)");
     }
   }
 }

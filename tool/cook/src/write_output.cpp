@@ -6,6 +6,7 @@
 #include "hullcook/cook/gltf_writer.h"
 #include "hullcook/cook/output_file.h"
 #include "hullcook/core/error.h"
+#include "utf8_names.h"
 
 #include <functional>
 #include <set>
@@ -31,6 +32,12 @@ OutputFormat output_format(const std::filesystem::path& path) {
 std::string output_bytes(const CookResult& result, const std::filesystem::path& path,
                          const Settings& settings) {
   const OutputFormat format = output_format(path);
+  // Asked of the outputs alone: `inspect --json` of a bundle, which keeps the bytes, prints the
+  // names as the debug JSON does.
+  if (format == OutputFormat::json) refuse_names_alike_in_utf8(result.assets, "debug JSON");
+  if (format == OutputFormat::gltf || format == OutputFormat::glb) {
+    refuse_names_alike_in_utf8(result.assets, "glTF");
+  }
   switch (format) {
     case OutputFormat::json:
       return debug_json(result.assets);
