@@ -128,7 +128,7 @@ TEST_F(DepfileCli, WrittenWithTheOutputsOrNotAtAll) {
 // rebuilt every time. Neither can be escaped for both: refused, as a line break is, naming the
 // file, before anything is written.
 TEST_F(DepfileCli, Stop60_ANameWithAColonOrATabIsRefusedNotWrittenUnreadable) {
-  for (const std::string name : {"co:lon.png", "tab\tx.png", "back\\"}) {
+  for (const std::string name : {"co:lon.png", "tab\tx.png", "back\\", "a\\ b.png", "a\\#b.png"}) {
     const fs::path folder = directory / "odd";
     fs::remove_all(folder);
     fs::create_directories(folder);

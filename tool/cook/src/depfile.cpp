@@ -10,8 +10,9 @@ namespace {
 
 // Make and Ninja escape a space, '#' and '$' alike, and nothing else the same way: a ':' made
 // Make read a second rule ("target pattern contains no '%'"), a tab split the name for Ninja
-// (which then rebuilt every time), and a name ending in '\' escaped the space after it (stop 60).
-// Those are refused, as a line break is.
+// (which then rebuilt every time), and a backslash before an escaped space or '#' (or the space
+// after the name) read as an escaped backslash: two names, or a comment (stop 60). Those are
+// refused, as a line break is.
 std::string escaped(const std::filesystem::path& path) {
   const std::string name = path.string();
   for (const auto& [c, what] : {std::pair{'\n', "a line break"}, std::pair{'\r', "a line break"},
@@ -20,8 +21,12 @@ std::string escaped(const std::filesystem::path& path) {
       throw UsageError(name + ": a depfile cannot name a path with " + what);
     }
   }
-  if (!name.empty() && name.back() == '\\') {
-    throw UsageError(name + ": a depfile cannot name a path that ends in a backslash");
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    if (name[i] == '\\' && (i + 1 == name.size() || name[i + 1] == ' ' || name[i + 1] == '#')) {
+      throw UsageError(name +
+                       ": a depfile cannot name a path with a backslash before a space, a '#' "
+                       "or its end");
+    }
   }
   std::string text;
   for (char c : name) {
