@@ -120,6 +120,7 @@ TEST_F(Interrupt, Issue19_SigkillLeavesTheOldOutputsOrTheNewOnes) {
   int finished = 0;
   for (int run = 0; run < 50; ++run) {
     const pid_t pid = start_cook("1");
+    ASSERT_GT(pid, 0);  // kill(-1) would signal every process the user owns
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(random)));
     kill(pid, SIGKILL);
     if (wait_for(pid) == 0) ++finished;
@@ -146,13 +147,20 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
   const fs::path first = directory / "first.bin", second = directory / "second.bin";
   const std::string old_bytes(1000, 'o');
   const std::string new_first(4 << 20, 'a'), new_second(4 << 20, 'b');
-  // The child says when it starts writing, and the kill's delay counts from then: counted from
-  // the fork, on a loaded machine (ctest -j2 beside other work) the child often had not run yet,
-  // and once none of 200 kills landed in a write (stop 60).
+  // The child says when it starts writing, and the write is timed and the kill's delay counted
+  // from then: counted from the fork, on a loaded machine (ctest -j2 beside other work) the child
+  // often had not run yet, and once none of 200 kills landed in a write (stop 60). -1 when no
+  // child could be started (kill(-1) would signal every process the user owns).
+  Clock::time_point writing;
   auto write_in_child = [&] {
     int ready[2];
     if (pipe(ready) != 0) return pid_t{-1};
     const pid_t pid = fork();
+    if (pid < 0) {
+      close(ready[0]);
+      close(ready[1]);
+      return pid_t{-1};
+    }
     if (pid == 0) {
       close(ready[0]);
       const char byte = 1;
@@ -166,7 +174,8 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
     }
     close(ready[1]);
     char byte = 0;
-    if (pid > 0 && read(ready[0], &byte, 1) != 1) byte = 0;
+    if (read(ready[0], &byte, 1) != 1) byte = 0;
+    writing = Clock::now();
     close(ready[0]);
     return pid;
   };
@@ -179,10 +188,11 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
   double write_ms = std::numeric_limits<double>::infinity();
   for (int calibration = 0; calibration < 3; ++calibration) {
     reset();
-    const auto start = Clock::now();
-    ASSERT_EQ(wait_for(write_in_child()), 0);
-    write_ms =
-        std::min(write_ms, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    const pid_t pid = write_in_child();
+    ASSERT_GT(pid, 0);
+    ASSERT_EQ(wait_for(pid), 0);
+    write_ms = std::min(write_ms,
+                        std::chrono::duration<double, std::milli>(Clock::now() - writing).count());
   }
   std::mt19937 random(1919);
   std::uniform_real_distribution<double> when(0.0, write_ms);
@@ -191,7 +201,9 @@ TEST_F(Interrupt, Issue19_SigkillDuringTheWriteLeavesWholeFiles) {
   for (int run = 0; run < 200 && (run < 50 || torn == 0); ++run) {
     reset();
     const pid_t pid = write_in_child();
-    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(random)));
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_until(writing +
+                                  std::chrono::duration<double, std::milli>(when(random)));
     kill(pid, SIGKILL);
     wait_for(pid);
     const std::string a = read_bytes(first), b = read_bytes(second);
@@ -214,6 +226,7 @@ TEST_F(Interrupt, Issue19_SigintStopsWithExit130AndNoTemporary) {
   int interrupted = 0;
   for (int run = 0; run < 10; ++run) {
     const pid_t pid = start_cook("1");
+    ASSERT_GT(pid, 0);  // kill(-1) would signal every process the user owns
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(random)));
     kill(pid, SIGINT);
     const int code = wait_for(pid);

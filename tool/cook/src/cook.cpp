@@ -707,15 +707,29 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
         }
       } catch (const std::logic_error& e) {
         // A broken invariant (the decomposer found no cut, say) is ours: named like a contract
-        // violation, with the asset.
-        errors[i] =
-            std::make_exception_ptr(ContractError(files[i].path + ": internal error: " + e.what()));
+        // violation, with the asset. Naming it allocates: out of memory, the error is that.
+        try {
+          errors[i] = std::make_exception_ptr(
+              ContractError(files[i].path + ": internal error: " + e.what()));
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
       } catch (...) {
         errors[i] = std::current_exception();
       }
     }
   };
+  // Every thread started is joined however this scope is left (an unjoined thread aborts).
   std::vector<std::thread> pool;
+  struct JoinAll {
+    std::vector<std::thread>& threads;
+    ~JoinAll() {
+      for (std::thread& thread : threads) {
+        if (thread.joinable()) thread.join();
+      }
+    }
+  } join_all{pool};
+  pool.reserve(threads - 1);
   for (unsigned t = 1; t < threads; ++t) {
     // A thread the system refuses (a limit on threads or address space) is one fewer worker, as
     // in parallel_for: the exception left the threads started unjoined, and the process aborted.
