@@ -119,6 +119,21 @@ TEST_F(CookCli, Stop60_AnOutputNameOfTheLongestTheFileSystemTakesIsWritten) {
   }
 }
 
+// Stop 60, a helper's hunt: an input that is a loop of links was "no such file or directory",
+// which sends the user looking for a typo; the system's reason is given.
+TEST_F(CookCli, Stop60_ALoopOfLinksIsSaidToBeOne) {
+  fs::create_symlink(directory / "b", directory / "a");
+  fs::create_symlink(directory / "a", directory / "b");
+  const auto result =
+      run_hullcook("cook " + (directory / "a").string() + " -o " + (directory / "o.hcb").string());
+  EXPECT_EQ(result.exit_code, static_cast<int>(ExitCode::bad_input)) << result.output;
+  EXPECT_NE(result.output.find((directory / "a").string() + ": "), std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("no such file"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("symbolic links"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(directory / "o.hcb"));
+}
+
 TEST_F(CookCli, TruncatedPng) {
   std::string png = opaque_square_png();
   expect_bad_input(write("truncated.png", png.substr(0, png.size() / 2)), "truncated.png");

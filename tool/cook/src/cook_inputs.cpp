@@ -218,6 +218,12 @@ std::vector<InputFile> collect_inputs(const std::vector<std::filesystem::path>& 
                      skipped, misfits);
     } else {
       refuse_unless_regular_file(input);
+      // A loop of links, or a directory on the way that cannot be searched, is said as such: "no
+      // such file" sent the user looking for a typo (a chain of 46 links, stop 60).
+      if (error && error != std::errc::no_such_file_or_directory &&
+          error != std::errc::not_a_directory) {
+        throw InputError(input.string() + ": " + error.message());
+      }
       throw InputError(input.string() + ": no such file or directory");
     }
   }
