@@ -38,7 +38,6 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 
 namespace hullcook {
@@ -719,28 +718,8 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
       }
     }
   };
-  // Every thread started is joined however this scope is left (an unjoined thread aborts).
-  std::vector<std::thread> pool;
-  struct JoinAll {
-    std::vector<std::thread>& threads;
-    ~JoinAll() {
-      for (std::thread& thread : threads) {
-        if (thread.joinable()) thread.join();
-      }
-    }
-  } join_all{pool};
-  pool.reserve(threads - 1);
-  for (unsigned t = 1; t < threads; ++t) {
-    // A thread the system refuses (a limit on threads or address space) is one fewer worker, as
-    // in parallel_for: the exception left the threads started unjoined, and the process aborted.
-    try {
-      pool.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;
-    }
-  }
-  work();
-  for (std::thread& thread : pool) thread.join();
+  // Threads of their own, not the process's pool: each asset's stages run parallel_for on it.
+  run_on_new_threads(threads - 1, [&](unsigned) { work(); });
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }

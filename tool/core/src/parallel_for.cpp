@@ -120,12 +120,23 @@ class WorkerPool {
 
 thread_local bool WorkerPool::inside_a_job = false;
 
-// Runs job(worker) on the caller and on helpers threads started for this call.
+}  // namespace
+
 void run_on_new_threads(unsigned helpers, const std::function<void(unsigned)>& job) {
   std::vector<std::thread> pool;
+  // Joined on every way out (an exception from job on the caller, say): an unjoined thread
+  // aborts the process.
+  struct JoinAll {
+    std::vector<std::thread>& threads;
+    ~JoinAll() {
+      for (std::thread& thread : threads) {
+        if (thread.joinable()) thread.join();
+      }
+    }
+  } join_all{pool};
   pool.reserve(helpers);
   for (unsigned t = 1; t <= helpers; ++t) {
-    // A thread the system refuses is one fewer worker: the others take its items.
+    // A thread the system refuses (a limit on threads or address space) is one fewer worker.
     try {
       pool.emplace_back(job, t);
     } catch (const std::system_error&) {
@@ -133,10 +144,7 @@ void run_on_new_threads(unsigned helpers, const std::function<void(unsigned)>& j
     }
   }
   job(0);
-  for (std::thread& thread : pool) thread.join();
 }
-
-}  // namespace
 
 void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t, unsigned)>& work, std::size_t min_count) {

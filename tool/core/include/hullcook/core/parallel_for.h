@@ -19,6 +19,12 @@ void parallel_for(std::size_t count, unsigned threads,
                   const std::function<void(std::size_t index, unsigned worker)>& work,
                   std::size_t min_count = 2);
 
+// Runs job(worker) on the caller (worker 0) and on up to `helpers` threads started for this call
+// (workers 1 ..), and returns when every one has; for work that must not share the process's
+// pool (a cook's assets, each of which runs parallel_for). A thread the system refuses is one
+// fewer helper: the others take its share. Every thread started is joined, however job ends.
+void run_on_new_threads(unsigned helpers, const std::function<void(unsigned worker)>& job);
+
 // parallel_for over the ranges [begin, end) of at most `chunk` items each, for items so small
 // (a ring's nesting query) that handing them out one by one would cost more than they do.
 inline void parallel_for_ranges(
