@@ -420,6 +420,40 @@ TEST(Cook, ShapeBudgetCoarserThanALevelOfDetailCountsItLeftOut) {
 // coarsest level" for a 416 x 304 image, a figure that read as a mistake. It is the concavity of a
 // region with holes, which Eq. 5 builds up along chains of holes; the warning now says why when τ
 // exceeds the regions' size (and only then: not for one shallow hole, nor without holes).
+// Stop 60's cliffs: an image the bundle cannot store (a side over 65,535 px) was refused by the
+// writer, after its cook (a 16 x 65,536 px maze: 581 s, then exit 3). With a bundle among the
+// outputs, cook() refuses it as soon as it is decoded, with the writer's message; a glTF cook
+// (no bundle) takes it.
+TEST(Cook, Stop61_AnImageTooLargeForTheBundleIsRefusedBeforeItsCook) {
+  const auto directory =
+      std::filesystem::temp_directory_path() / ("hullcook_wide_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  test::DrawnSprite sprite("wide", 65536, 2);
+  sprite.box(99, -1, 101, 4);
+  const auto wide = directory / "wide.png";
+  std::ofstream(wide, std::ios::binary) << sprite.png();
+  Settings settings;
+  settings.bundle_output = true;
+  try {
+    cook({wide}, settings);
+    ADD_FAILURE() << "cook() took an image 65,536 px wide for a bundle";
+  } catch (const OutputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("bundle: asset 'wide.png': its image (" + wide.generic_string() +
+                        ") is 65536 x 2 px, a side more than the bundle's 65535"),
+              std::string::npos)
+        << error.what();
+  }
+  settings.bundle_output = false;
+  const CookResult taken = cook({wide}, settings);
+  ASSERT_EQ(taken.assets.size(), 1u);
+  EXPECT_EQ(taken.assets[0].image_width, 65536);
+  EXPECT_FALSE(taken.assets[0].levels.empty());
+  EXPECT_FALSE(taken.assets[0].levels[0].hulls.empty());
+  std::filesystem::remove_all(directory);
+}
+
 TEST(Cook, ShapeBudgetWarningExplainsAHoleConcavityBeyondTheRegionsSize) {
   const auto directory = std::filesystem::temp_directory_path() / "hullcook_budget_holes";
   std::filesystem::remove_all(directory);

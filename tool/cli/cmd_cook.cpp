@@ -171,6 +171,7 @@ void add_cook(CLI::App& root, CommandAction& action) {
         else if (!stream)
           stream = std::make_unique<BundleStream>();
       }
+      command->settings.bundle_output = stream != nullptr;
       command->settings.keep_hulls = hulls_needed || !stream;
       ProgressBar progress(!command->quiet && ProgressBar::stdout_is_terminal());
       const AssetCooked on_cooked = [&stream, &progress](std::size_t index, std::size_t count,

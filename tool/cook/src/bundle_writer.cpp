@@ -41,14 +41,7 @@ void check_name(const CookedAsset& asset) {
 }
 
 void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
-  if (asset.image_width < 0 || asset.image_width > 0xFFFF || asset.image_height < 0 ||
-      asset.image_height > 0xFFFF) {
-    bundle_asset_error(asset, "its image (" + asset.source + ") is " +
-                                  std::to_string(asset.image_width) + " x " +
-                                  std::to_string(asset.image_height) +
-                                  " px, a side more than the bundle's 65535; cut it into cells "
-                                  "with --grid, or write glTF (.glb), which has no such limit");
-  }
+  check_bundle_image_size(asset.name, asset.source, asset.image_width, asset.image_height);
   if (!std::isfinite(asset.pixels_per_unit) || !(static_cast<float>(asset.pixels_per_unit) > 0) ||
       !std::isfinite(static_cast<float>(asset.pixels_per_unit)))
     bundle_asset_error(asset, "pixels per unit must be a positive, finite 32-bit float");
@@ -329,6 +322,21 @@ bool read_at(int fd, std::size_t offset, void* first, std::size_t first_size, vo
 }
 
 }  // namespace
+
+static_assert(kBundleLargestImageSide ==
+              std::numeric_limits<decltype(AssetRecord::image_width)>::max());
+
+void check_bundle_image_size(const std::string& name, const std::string& source, int width,
+                             int height) {
+  if (width < 0 || width > kBundleLargestImageSide || height < 0 ||
+      height > kBundleLargestImageSide) {
+    bundle_asset_error(name, "its image (" + source + ") is " + std::to_string(width) + " x " +
+                                 std::to_string(height) + " px, a side more than the bundle's " +
+                                 std::to_string(kBundleLargestImageSide) +
+                                 "; cut it into cells with --grid, or write glTF (.glb), which "
+                                 "has no such limit");
+  }
+}
 
 std::string write_bundle(const std::vector<CookedAsset>& assets) {
   std::vector<AssetRecords> records;

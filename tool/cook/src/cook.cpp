@@ -6,6 +6,7 @@
 #include "contract_text.h"
 #include "cook_inputs.h"
 #include "grid.h"
+#include "hullcook/cook/bundle_writer.h"
 #include "hullcook/cook/constrain.h"
 #include "hullcook/cook/contract.h"
 #include "hullcook/core/clean.h"
@@ -191,6 +192,10 @@ PreparedInput prepare_image(const InputFile& file, const Settings& settings, uns
   start = Clock::now();
   prepared.width = image.width;
   prepared.height = image.height;
+  if (settings.bundle_output) {
+    check_bundle_image_size(file.name, std::filesystem::path(file.path).generic_string(),
+                            image.width, image.height);
+  }
   double simplify = settings.simplify.value_or(0);
   if (!settings.simplify) {
     if (settings.tau.relative) {

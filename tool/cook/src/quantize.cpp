@@ -376,14 +376,13 @@ Attempt quantize_hull(const Ring& hull, float step, double bound, Rounding round
 
 }  // namespace
 
-void bundle_asset_error(const CookedAsset& asset, const std::string& problem) {
+void bundle_asset_error(const std::string& name, const std::string& problem) {
   // A name too long for the bundle is shown by its start: a sheet's frame named by 70 KB of
   // text was repeated whole in the message (a helper's sheets, stop 59).
   constexpr std::size_t kShown = 120;
-  const std::string shown =
-      asset.name.size() <= kShown
-          ? asset.name
-          : asset.name.substr(0, kShown) + "... (" + std::to_string(asset.name.size()) + " bytes)";
+  const std::string shown = name.size() <= kShown ? name
+                                                  : name.substr(0, kShown) + "... (" +
+                                                        std::to_string(name.size()) + " bytes)";
   throw OutputError("bundle: asset '" + shown + "': " + problem);
 }
 

@@ -20,7 +20,10 @@ struct QuantizedAsset {
 };
 
 // Throws OutputError "bundle: asset 'NAME': problem".
-[[noreturn]] void bundle_asset_error(const CookedAsset& asset, const std::string& problem);
+[[noreturn]] void bundle_asset_error(const std::string& name, const std::string& problem);
+[[noreturn]] inline void bundle_asset_error(const CookedAsset& asset, const std::string& problem) {
+  bundle_asset_error(asset.name, problem);
+}
 
 // Every hull of levels on one grid whose step is the largest that stores each hull strictly
 // convex, in 16-bit deltas from its base, within the bound readers report (SPEC §9); throws

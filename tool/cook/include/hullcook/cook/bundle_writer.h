@@ -28,6 +28,14 @@ namespace hullcook {
 // their 32-bit hash that no sane name table meets the readers' probe budget (SPEC §6).
 std::string write_bundle(const std::vector<CookedAsset>& assets);
 
+// The largest image side a bundle stores [px].
+inline constexpr int kBundleLargestImageSide = 0xFFFF;
+
+// Throws write_bundle's OutputError for asset `name` when its image of width x height px (read
+// from source) has a side a bundle cannot store.
+void check_bundle_image_size(const std::string& name, const std::string& source, int width,
+                             int height);
+
 // How an asset's records are laid out in a bundle.
 struct AssetShape {
   float step = 0.0f;                       // [output units] the quantization grid's step

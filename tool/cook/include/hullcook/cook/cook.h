@@ -88,6 +88,10 @@ struct Settings {
   std::optional<PhysicsProperties> physics;
   bool draco = false;
   bool meshopt = false;  // glTF: EXT_meshopt_compression + KHR_mesh_quantization
+  // An output is a bundle, which stores image sides in 16 bits: an image with a larger side is
+  // refused as soon as it is decoded, not after its cook (a 16 x 65,536 px maze cooked for 581 s
+  // before the bundle refused it, stop 60).
+  bool bundle_output = false;
   unsigned threads = 0;  // 0: hardware concurrency; outputs never depend on it
   // Keep each asset's regions and pieces (with their components) and its cutout's image path in
   // the result: the debug JSON and the HTML report need them, the bundle and glTF writers only
