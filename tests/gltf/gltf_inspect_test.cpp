@@ -239,5 +239,80 @@ TEST_F(GltfInspect, BadFilesAreRefusedWithExitCode2) {
   EXPECT_NE(missing.err.find("missing.glb"), std::string::npos);
 }
 
+// A helper's hunt (stop 60): files that parse but break what the writer promises were printed
+// with exit 0. Each is refused now, naming the node and the problem.
+TEST_F(GltfInspect, Stop61_FilesThatBreakTheWritersPromisesAreRefused) {
+  const json good = json::parse(write_gltf({test::box_asset(), test::physics_asset()}, {}));
+  const json meshopt =
+      json::parse(write_gltf({test::box_asset(), test::physics_asset()}, {.meshopt = true}));
+  ASSERT_EQ(inspect(write("good.gltf", good.dump()), false).code, 0);
+  ASSERT_EQ(inspect(write("good_meshopt.gltf", meshopt.dump()), false).code, 0);
+  // Version 1 keeps hulls as JSON numbers: the simplest way to give a hull any shape.
+  auto version1 = [](const json& hulls) {
+    return json{{"asset", {{"version", "2.0"}, {"generator", "hullcook"}}},
+                {"nodes",
+                 {{{"name", "a"},
+                   {"extras",
+                    {{"hullcook",
+                      {{"version", 1},
+                       {"source", "a.png"},
+                       {"image_size", {4, 4}},
+                       {"pixels_per_unit", 1},
+                       {"pivot", {0, 0}},
+                       {"transform", {{"scale", 1}, {"origin", {0, 0}}, {"flip_y", false}}},
+                       {"tau", 0},
+                       {"measure", "h1"},
+                       {"levels", {{{"tau", 0}, {"hulls", hulls}}}}}}}}}}}};
+  };
+  ASSERT_EQ(inspect(write("square.gltf", version1({{0, 0, 1, 0, 1, 1, 0, 1}}).dump()), false).code,
+            0);
+  struct Case {
+    std::string name, expected;
+    json document;
+  };
+  std::vector<Case> cases = {
+      {"clockwise.gltf", "levels[0], hull 0: its hull is clockwise",
+       version1({{0, 0, 0, 1, 1, 1, 1, 0}})},
+      {"reflex.gltf", "levels[0], hull 0: its hull is not convex at its vertex (1, 0.25)",
+       version1({{0, 0, 2, 0, 1, 0.25, 2, 2, 0, 2}})},
+      {"two_vertices.gltf", "levels[0], hull 0: its hull has 2 vertices", version1({{0, 0, 1, 0}})},
+  };
+  auto changed = [&](const std::string& name, const std::string& expected, json document,
+                     auto&& change) {
+    change(document);
+    cases.push_back({name, expected, std::move(document)});
+  };
+  changed("scale_zero.gltf", "levels[0], hull 0: its hull", meshopt, [](json& root) {
+    root["nodes"][0]["scale"] = {0, 0, 0};
+  });
+  changed("mirrored.gltf", "levels[0], hull 0: its hull is clockwise", meshopt, [](json& root) {
+    root["nodes"][0]["scale"][0] = -root["nodes"][0]["scale"][0].get<double>();
+  });
+  changed("levels_out_of_order.gltf", "levels[1]: \"tau\" 0.5 is finer than the level before", good,
+          [](json& root) {
+            json& levels = root["nodes"][0]["extras"]["hullcook"]["levels"];
+            levels[0]["tau"] = 1.0;
+            levels[1]["tau"] = 0.5;
+          });
+  changed("negative_ppu.gltf", "\"pixels_per_unit\" is not a positive 32-bit float", good,
+          [](json& root) { root["nodes"][1]["extras"]["hullcook"]["pixels_per_unit"] = -32; });
+  changed("unknown_measure.gltf", "\"measure\" 'xy' is not one of sl, sp, h1, h2", good,
+          [](json& root) { root["nodes"][1]["extras"]["hullcook"]["measure"] = "xy"; });
+  changed("twins.gltf", "two asset nodes are named", good,
+          [](json& root) { root["nodes"][1]["name"] = root["nodes"][0]["name"]; });
+  changed("nameless.gltf", "an asset node without a name", good,
+          [](json& root) { root["nodes"][1].erase("name"); });
+  changed("stripped.gltf", "node 0 has no extras.hullcook", good, [](json& root) {
+    for (json& node : root["nodes"]) node.erase("extras");
+  });
+  for (const Case& bad : cases) {
+    InspectRun run = inspect(write(bad.name, bad.document.dump()), false);
+    EXPECT_EQ(run.code, 2) << bad.name << ": " << run.out;
+    EXPECT_NE(run.err.find(bad.name), std::string::npos) << bad.name << ": " << run.err;
+    EXPECT_NE(run.err.find(bad.expected), std::string::npos) << bad.name << ": " << run.err;
+    EXPECT_EQ(run.out, "") << bad.name;
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -8,10 +8,12 @@
 #include "shortest.h"
 
 #include "hullcook/cook/asset.h"
+#include "hullcook/cook/contract.h"
 #include "hullcook/cook/debug_json.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -20,6 +22,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -293,6 +296,44 @@ CookedAsset read_asset(const json& node, const json& extras, std::size_t node_in
   return asset;
 }
 
+// What the writer promises of every asset (docs/gltf-extras.md), checked as the bundle reader
+// checks a bundle's: a file corrupted or changed by another tool is refused instead of printed.
+// A helper's hunt (stop 60) had bit flips in meshopt data make hulls non-convex, a node scale of
+// 0 make them points, and levels out of order, each printed with exit 0.
+void check_asset(const CookedAsset& asset, const std::string& where) {
+  if (asset.name.empty()) throw BadGltf(where + ": an asset node without a name");
+  if (!(static_cast<float>(asset.pixels_per_unit) > 0.0f) ||
+      !std::isfinite(static_cast<float>(asset.pixels_per_unit))) {
+    throw BadGltf(where + ": \"pixels_per_unit\" is not a positive 32-bit float");
+  }
+  if (!(asset.tau >= 0)) throw BadGltf(where + ": a negative \"tau\"");
+  if (asset.measure != "sl" && asset.measure != "sp" && asset.measure != "h1" &&
+      asset.measure != "h2") {
+    throw BadGltf(where + ": \"measure\" '" + printable(asset.measure) +
+                  "' is not one of sl, sp, h1, h2");
+  }
+  double finer = 0.0;
+  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+    const CookedLevel& level = asset.levels[l];
+    const std::string at = where + ".levels[" + std::to_string(l) + "]";
+    if (!(level.tau >= finer)) {
+      throw BadGltf(at + ": \"tau\" " + shortest_text(level.tau) +
+                    (level.tau < 0 ? " is negative" : " is finer than the level before it's"));
+    }
+    finer = level.tau;
+    for (std::size_t h = 0; h < level.hulls.size(); ++h) {
+      for (const Vec2& v : level.hulls[h]) {
+        if (!std::isfinite(v.x) || !std::isfinite(v.y)) {
+          throw BadGltf(at + ", hull " + std::to_string(h) + ": a vertex is not finite");
+        }
+      }
+      if (std::optional<std::string> defect = hull_shape_defect(level.hulls[h])) {
+        throw BadGltf(at + ", hull " + std::to_string(h) + ": " + *defect);
+      }
+    }
+  }
+}
+
 struct GltfContents {
   bool binary = false;
   bool draco = false;
@@ -333,6 +374,9 @@ GltfContents read_gltf(const std::filesystem::path& path) {
       if (!extras.contains("hullcook") || !extras["hullcook"].is_object()) continue;
       if (!extras["hullcook"].contains("version")) continue;  // a hull node, not an asset node
       contents.assets.push_back(read_asset(node, extras["hullcook"], i, data));
+      check_asset(contents.assets.back(), "node " + std::to_string(i) + " (\"" +
+                                              printable(contents.assets.back().name) +
+                                              "\") extras.hullcook");
     }
   }
   // hullcook writes a valid document for zero assets; any other glTF without our extras is not
@@ -340,6 +384,31 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   const bool ours = root["asset"].contains("generator") && root["asset"]["generator"] == "hullcook";
   if (contents.assets.empty() && !ours) {
     throw BadGltf("glTF without hullcook data (no node has extras.hullcook with a version)");
+  }
+  // Every node hullcook writes holds extras.hullcook (an asset node's, or in version 1 a hull
+  // node's): one without it lost it (other tools' exports drop extras), and printing "0 assets"
+  // would hide that.
+  if (ours && root.contains("nodes") && root["nodes"].is_array()) {
+    const json& nodes = root["nodes"];
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const json& node = nodes[i];
+      if (!node.is_object() || !node.contains("extras") || !node["extras"].is_object() ||
+          !node["extras"].contains("hullcook") || !node["extras"]["hullcook"].is_object()) {
+        throw BadGltf("node " + std::to_string(i) +
+                      " has no extras.hullcook, which every node hullcook writes holds (the "
+                      "hulls' data; did another tool drop the extras?)");
+      }
+    }
+  }
+  // Names are the assets' keys, as in a bundle.
+  std::vector<const std::string*> names;
+  for (const CookedAsset& asset : contents.assets) names.push_back(&asset.name);
+  std::sort(names.begin(), names.end(),
+            [](const std::string* a, const std::string* b) { return *a < *b; });
+  for (std::size_t i = 1; i < names.size(); ++i) {
+    if (*names[i] == *names[i - 1]) {
+      throw BadGltf("two asset nodes are named \"" + printable(*names[i]) + "\"");
+    }
   }
   return contents;
 }
