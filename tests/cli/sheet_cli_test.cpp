@@ -354,6 +354,46 @@ TEST_F(SheetCli, BadSheetsAreRefusedNamingTheFile) {
                  "frame 'a': pivot: 'x' must be a finite number");
 }
 
+// Stop 59's sheets (a helper's): a frame whose sizes an exporter writes with a point (20.0) was
+// refused as "not a whole number", and an array frame whose 'filename' was a number was said to
+// have none. 20.0 now reads as 20, the same assets as the integers; the name is told to be a
+// string.
+TEST_F(SheetCli, Stop61_WholeNumbersWrittenWithAPointAreWholeAndAFilenameMustBeAString) {
+  json hash = json::parse(read_bytes(directory / "hash.json"));
+  for (auto& [key, entry] : hash["frames"].items()) {
+    for (const char* field : {"frame", "spriteSourceSize", "sourceSize"}) {
+      if (!entry.contains(field)) continue;
+      for (auto& [name, value] : entry[field].items()) {
+        if (value.is_number_integer()) value = value.get<double>();
+      }
+    }
+  }
+  const std::string text = hash.dump();
+  ASSERT_NE(text.find(".0"), std::string::npos) << text;
+  write("points.json", text);
+  const auto integers = cook((directory / "hash.json").string());
+  auto with_points = cook((directory / "points.json").string());
+  ASSERT_EQ(with_points.size(), integers.size());
+  for (const auto& [name, asset] : integers) {
+    SCOPED_TRACE(name);
+    const std::string renamed = "points" + name.substr(name.find('/'));
+    ASSERT_TRUE(with_points.count(renamed));
+    EXPECT_EQ(with_points[renamed]["levels"], asset["levels"]);
+    EXPECT_EQ(with_points[renamed]["image"], asset["image"]);
+  }
+  auto sheet = [](const json& frames) {
+    return json{{"frames", frames}, {"meta", {{"image", "atlas.png"}}}}.dump();
+  };
+  const json frame = {{"x", 1}, {"y", 0}, {"w", 2}, {"h", 2}};
+  expect_refused("numbered.json", sheet(json::array({{{"filename", 7}, {"frame", frame}}})),
+                 "frame 0: 'filename' must be a string");
+  expect_refused("unnamed.json", sheet(json::array({{{"frame", frame}}})),
+                 "frame 0: no 'filename'");
+  expect_refused("half.json",
+                 sheet({{"a", {{"frame", {{"x", 1.5}, {"y", 0}, {"w", 2}, {"h", 2}}}}}}),
+                 "'x' must be a whole number");
+}
+
 // Stop 58, a helper's hostile files: a hash that keys two frames alike lost one of them (the
 // parsed object keeps one), where the README promises a refusal; and 'frames' nested 90,000
 // deep crashed the cook (the ordered JSON copies a member's value whole, recursively).

@@ -43,13 +43,18 @@ class SheetReader {
 
   int whole(const Json& object, const char* key, const std::string& where, long long least) const {
     const Json& value = member(object, key, where);
-    if (!value.is_number_integer()) {
+    // 20.0 is a whole number too: some exporters write every number with a point.
+    const bool integral_real = value.is_number_float() && std::isfinite(value.get<double>()) &&
+                               std::trunc(value.get<double>()) == value.get<double>();
+    if (!value.is_number_integer() && !integral_real) {
       fail(where, std::string("'") + key + "' must be a whole number");
     }
     const bool is_unsigned = value.is_number_unsigned();
-    const long long number = is_unsigned ? static_cast<long long>(std::min<std::uint64_t>(
-                                               value.get<std::uint64_t>(), kLargestCoordinate + 1))
-                                         : value.get<long long>();
+    const long long number =
+        integral_real ? static_cast<long long>(std::clamp(value.get<double>(), -1e12, 1e12))
+        : is_unsigned ? static_cast<long long>(std::min<std::uint64_t>(value.get<std::uint64_t>(),
+                                                                       kLargestCoordinate + 1))
+                      : value.get<long long>();
     if (number < least || number > kLargestCoordinate) {
       fail(where, std::string("'") + key + "' is " + value.dump() + ", out of range (" +
                       std::to_string(least) + " to " + std::to_string(kLargestCoordinate) + ")");
@@ -235,8 +240,9 @@ Sheet parse_sheet(std::string_view text, const std::filesystem::path& path,
   } else if (frames.is_array()) {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const Json& entry = frames[i];
-      if (!entry.is_object() || !entry.contains("filename") || !entry["filename"].is_string()) {
-        reader.fail("frame " + std::to_string(i), "no 'filename'");
+      const Json& filename = reader.member(entry, "filename", "frame " + std::to_string(i));
+      if (!filename.is_string()) {
+        reader.fail("frame " + std::to_string(i), "'filename' must be a string");
       }
       sheet.frames.push_back(reader.frame(
           without_image_extension(entry["filename"].get<std::string>()), entry, max_pixels));
