@@ -154,5 +154,24 @@ TEST(Inspect, Stop60_ABundleOfNamesAlikeInUtf8IsPrintedAsJson) {
   EXPECT_EQ(json["assets"][1]["name"], "x\ufffd");
 }
 
+// Review of stop 61's glTF checks: inspect read a glTF's floats as their shortest decimals,
+// which can turn a nearly straight run of three hull vertices the other way; it refused files
+// that cook wrote (19 of a helper's 2,500: a pivot 1,000 sprites away, --ppu 7.3 --weld 0).
+// The hulls are checked as stored (and printed by their shortest decimals, as before).
+TEST(Inspect, Stop61_AGltfIsCheckedOnItsFloatsAsStored) {
+  const fs::path sprite =
+      fs::path(HULLCOOK_SOURCE_DIR) / "samples/sprites/teeworlds__mapres__jungle_midground.png";
+  for (const char* name : {"far_pivot.glb", "far_pivot.gltf"}) {
+    const fs::path out = work_dir() / name;
+    const auto cooked =
+        test::run_hullcook("cook " + sprite.string() + " --pivot 1000,1000 -q -o " + out.string());
+    ASSERT_EQ(cooked.exit_code, 0) << cooked.output;
+    const auto text = test::run_hullcook("inspect " + out.string());
+    EXPECT_EQ(text.exit_code, 0) << text.output;
+    const auto json_text = test::run_hullcook("inspect --json " + out.string() + " 2>/dev/null");
+    EXPECT_EQ(json_text.exit_code, 0) << json_text.output;
+  }
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -282,7 +282,7 @@ TEST_F(GltfInspect, Stop61_FilesThatBreakTheWritersPromisesAreRefused) {
     change(document);
     cases.push_back({name, expected, std::move(document)});
   };
-  changed("scale_zero.gltf", "levels[0], hull 0: its hull", meshopt, [](json& root) {
+  changed("scale_zero.gltf", "levels[0], hull 0: its hull has no area", meshopt, [](json& root) {
     root["nodes"][0]["scale"] = {0, 0, 0};
   });
   changed("mirrored.gltf", "levels[0], hull 0: its hull is clockwise", meshopt, [](json& root) {
@@ -302,6 +302,9 @@ TEST_F(GltfInspect, Stop61_FilesThatBreakTheWritersPromisesAreRefused) {
           [](json& root) { root["nodes"][1]["name"] = root["nodes"][0]["name"]; });
   changed("nameless.gltf", "an asset node without a name", good,
           [](json& root) { root["nodes"][1].erase("name"); });
+  changed("nodes_object.gltf", "\"nodes\" is not an array", good, [](json& root) {
+    root["nodes"] = json{{"a", 1}};
+  });
   changed("stripped.gltf", "node 0 has no extras.hullcook", good, [](json& root) {
     for (json& node : root["nodes"]) node.erase("extras");
   });

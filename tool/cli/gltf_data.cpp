@@ -126,7 +126,7 @@ double read_component(const char* at, int type) {
     default: {
       float v;
       std::memcpy(&v, at, 4);
-      return shortest_double(v);
+      return v;
     }
   }
 }

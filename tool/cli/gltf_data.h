@@ -24,7 +24,7 @@ struct BadGltf : std::runtime_error {
 struct AccessorData {
   int component_type = 0;
   std::size_t components = 0;
-  std::vector<double> values;  // element after element; a float as the double of its shortest form
+  std::vector<double> values;  // element after element; a float exactly, as a double
 };
 
 class GltfData {

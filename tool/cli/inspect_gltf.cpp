@@ -189,7 +189,8 @@ NodeScaling node_scaling(const json& node, const std::string& where) {
 // hull, in the accessor "vertices" (x, y are its first two components, mapped by the node's
 // translation and scale); both absent for a level without hulls.
 std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const GltfData& data,
-                               const NodeScaling& scaling) {
+                               const NodeScaling& scaling, bool& floats) {
+  floats = false;
   std::vector<Ring> hulls;
   if (!level.contains("counts")) {
     if (level.contains("vertices"))
@@ -214,6 +215,7 @@ std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const Gl
     throw BadGltf(fields.where() +
                   ".vertices: not a FLOAT or SHORT accessor of at least two components");
   }
+  floats = vertices.component_type == 5126;
   const std::size_t stored = vertices.values.size() / vertices.components;
   if (stored != total) {
     throw BadGltf(fields.where() + ": the counts add up to " + std::to_string(total) +
@@ -231,69 +233,6 @@ std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const Gl
     }
   }
   return hulls;
-}
-
-CookedAsset read_asset(const json& node, const json& extras, std::size_t node_index,
-                       const GltfData& data) {
-  CookedAsset asset;
-  asset.name = node.contains("name") && node["name"].is_string() ? node["name"].get<std::string>()
-                                                                 : std::string();
-  const Fields fields(
-      extras, "node " + std::to_string(node_index) + " (\"" + asset.name + "\") extras.hullcook");
-  const std::int64_t version = fields.integer("version", 1, INT32_MAX);
-  if (version > kExtrasVersion) {
-    throw BadGltf(fields.where() + ": version " + std::to_string(version) +
-                  " is newer than this hullcook reads (" + std::to_string(kExtrasVersion) + ")");
-  }
-  asset.source = fields.string("source");
-  const json& size = fields.array("image_size");
-  if (size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
-      size[0].get<std::int64_t>() < 0 || size[1].get<std::int64_t>() < 0 ||
-      size[0].get<std::int64_t>() > INT32_MAX || size[1].get<std::int64_t>() > INT32_MAX) {
-    throw BadGltf(fields.where() + ": \"image_size\" is not two non-negative integers");
-  }
-  asset.image_width = size[0].get<int>();
-  asset.image_height = size[1].get<int>();
-  asset.pixels_per_unit = fields.number("pixels_per_unit");
-  asset.pivot = fields.pair("pivot");
-  const Fields transform(fields.object("transform"), fields.where() + ".transform");
-  asset.transform.scale = transform.number("scale");
-  asset.transform.origin = transform.pair("origin");
-  asset.transform.flip_y = transform.boolean("flip_y");
-  asset.tau = fields.number("tau");
-  asset.measure = fields.string("measure");
-
-  const NodeScaling scaling =
-      node_scaling(node, "node " + std::to_string(node_index) + " (\"" + asset.name + "\")");
-  // --meshopt's grid (KHR_mesh_quantization): rounding to it moves a vertex by at most half a
-  // step per coordinate, the bound that inspect of a bundle prints too (docs/gltf-extras.md).
-  if (node.contains("scale") && scaling.scale.x == scaling.scale.y && scaling.scale.x > 0) {
-    asset.quantization_error = scaling.scale.x / std::sqrt(2.0);
-  }
-  const json& levels = fields.array("levels");
-  for (std::size_t l = 0; l < levels.size(); ++l) {
-    if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
-    const Fields level_fields(levels[l], fields.where() + ".levels[" + std::to_string(l) + "]");
-    CookedLevel level;
-    level.tau = level_fields.number("tau");
-    level.hulls = version == 1 ? json_hulls(level_fields)
-                               : buffer_hulls(levels[l], level_fields, data, scaling);
-    asset.levels.push_back(std::move(level));
-  }
-
-  if (extras.contains("physics")) {
-    const Fields physics(fields.object("physics"), fields.where() + ".physics");
-    PhysicsProperties properties;
-    properties.density = static_cast<float>(physics.number("density"));
-    properties.friction = static_cast<float>(physics.number("friction"));
-    properties.restitution = static_cast<float>(physics.number("restitution"));
-    properties.sensor = physics.boolean("sensor");
-    properties.category_bits =
-        static_cast<std::uint16_t>(physics.integer("category_bits", 0, 0xFFFF));
-    properties.mask_bits = static_cast<std::uint16_t>(physics.integer("mask_bits", 0, 0xFFFF));
-    asset.physics = properties;
-  }
-  return asset;
 }
 
 // What the writer promises of every asset (docs/gltf-extras.md), checked as the bundle reader
@@ -334,6 +273,85 @@ void check_asset(const CookedAsset& asset, const std::string& where) {
   }
 }
 
+CookedAsset read_asset(const json& node, const json& extras, std::size_t node_index,
+                       const GltfData& data) {
+  CookedAsset asset;
+  asset.name = node.contains("name") && node["name"].is_string() ? node["name"].get<std::string>()
+                                                                 : std::string();
+  const Fields fields(
+      extras, "node " + std::to_string(node_index) + " (\"" + asset.name + "\") extras.hullcook");
+  const std::int64_t version = fields.integer("version", 1, INT32_MAX);
+  if (version > kExtrasVersion) {
+    throw BadGltf(fields.where() + ": version " + std::to_string(version) +
+                  " is newer than this hullcook reads (" + std::to_string(kExtrasVersion) + ")");
+  }
+  asset.source = fields.string("source");
+  const json& size = fields.array("image_size");
+  if (size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
+      size[0].get<std::int64_t>() < 0 || size[1].get<std::int64_t>() < 0 ||
+      size[0].get<std::int64_t>() > INT32_MAX || size[1].get<std::int64_t>() > INT32_MAX) {
+    throw BadGltf(fields.where() + ": \"image_size\" is not two non-negative integers");
+  }
+  asset.image_width = size[0].get<int>();
+  asset.image_height = size[1].get<int>();
+  asset.pixels_per_unit = fields.number("pixels_per_unit");
+  asset.pivot = fields.pair("pivot");
+  const Fields transform(fields.object("transform"), fields.where() + ".transform");
+  asset.transform.scale = transform.number("scale");
+  asset.transform.origin = transform.pair("origin");
+  asset.transform.flip_y = transform.boolean("flip_y");
+  asset.tau = fields.number("tau");
+  asset.measure = fields.string("measure");
+
+  const NodeScaling scaling =
+      node_scaling(node, "node " + std::to_string(node_index) + " (\"" + asset.name + "\")");
+  // --meshopt's grid (KHR_mesh_quantization): rounding to it moves a vertex by at most half a
+  // step per coordinate, the bound that inspect of a bundle prints too (docs/gltf-extras.md).
+  if (node.contains("scale") && scaling.scale.x == scaling.scale.y && scaling.scale.x > 0) {
+    asset.quantization_error = scaling.scale.x / std::sqrt(2.0);
+  }
+  const json& levels = fields.array("levels");
+  std::vector<char> of_floats(levels.size(), 0);
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    if (!levels[l].is_object()) throw BadGltf(fields.where() + ": a level is not an object");
+    const Fields level_fields(levels[l], fields.where() + ".levels[" + std::to_string(l) + "]");
+    CookedLevel level;
+    level.tau = level_fields.number("tau");
+    bool floats = false;
+    level.hulls = version == 1 ? json_hulls(level_fields)
+                               : buffer_hulls(levels[l], level_fields, data, scaling, floats);
+    of_floats[l] = floats && !node.contains("translation") && !node.contains("scale");
+    asset.levels.push_back(std::move(level));
+  }
+  // The writer promises convex hulls of the floats as stored (a reader computes with them), so
+  // they are checked as they are; a float is then shown by its shortest decimal, which may turn
+  // a nearly straight run of three the other way (a helper's review: --ppu 7.3 --weld 0).
+  check_asset(asset, "node " + std::to_string(node_index) + " (\"" + printable(asset.name) +
+                         "\") extras.hullcook");
+  for (std::size_t l = 0; l < asset.levels.size(); ++l) {
+    if (!of_floats[l]) continue;
+    for (Ring& hull : asset.levels[l].hulls) {
+      for (Vec2& v : hull) {
+        v = {shortest_double(static_cast<float>(v.x)), shortest_double(static_cast<float>(v.y))};
+      }
+    }
+  }
+
+  if (extras.contains("physics")) {
+    const Fields physics(fields.object("physics"), fields.where() + ".physics");
+    PhysicsProperties properties;
+    properties.density = static_cast<float>(physics.number("density"));
+    properties.friction = static_cast<float>(physics.number("friction"));
+    properties.restitution = static_cast<float>(physics.number("restitution"));
+    properties.sensor = physics.boolean("sensor");
+    properties.category_bits =
+        static_cast<std::uint16_t>(physics.integer("category_bits", 0, 0xFFFF));
+    properties.mask_bits = static_cast<std::uint16_t>(physics.integer("mask_bits", 0, 0xFFFF));
+    asset.physics = properties;
+  }
+  return asset;
+}
+
 struct GltfContents {
   bool binary = false;
   bool draco = false;
@@ -365,6 +383,10 @@ GltfContents read_gltf(const std::filesystem::path& path) {
     }
   }
   const GltfData data(root, std::move(bin));
+  const bool ours = root["asset"].contains("generator") && root["asset"]["generator"] == "hullcook";
+  if (ours && root.contains("nodes") && !root["nodes"].is_array()) {
+    throw BadGltf("\"nodes\" is not an array");
+  }
   if (root.contains("nodes") && root["nodes"].is_array()) {
     const json& nodes = root["nodes"];
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -374,14 +396,10 @@ GltfContents read_gltf(const std::filesystem::path& path) {
       if (!extras.contains("hullcook") || !extras["hullcook"].is_object()) continue;
       if (!extras["hullcook"].contains("version")) continue;  // a hull node, not an asset node
       contents.assets.push_back(read_asset(node, extras["hullcook"], i, data));
-      check_asset(contents.assets.back(), "node " + std::to_string(i) + " (\"" +
-                                              printable(contents.assets.back().name) +
-                                              "\") extras.hullcook");
     }
   }
   // hullcook writes a valid document for zero assets; any other glTF without our extras is not
   // ours.
-  const bool ours = root["asset"].contains("generator") && root["asset"]["generator"] == "hullcook";
   if (contents.assets.empty() && !ours) {
     throw BadGltf("glTF without hullcook data (no node has extras.hullcook with a version)");
   }

@@ -190,16 +190,18 @@ struct HullDefect {
 std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limits) {
   const std::size_t n = hull.size();
   if (n < 3) return HullDefect{"its hull has " + std::to_string(n) + " vertices", false};
-  std::size_t left_turns = 0, first_other = n;
+  std::size_t left_turns = 0, right_turns = 0, first_other = n;
   // Turning left at every vertex, a polygon that winds k times has 2k changes of vertical
   // direction: once, it is convex.
   std::size_t direction_changes = 0;
   int first_direction = 0, last_direction = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (orientation(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]) > 0) {
+    const int turn = orientation(hull[(i + n - 1) % n], hull[i], hull[(i + 1) % n]);
+    if (turn > 0) {
       ++left_turns;
-    } else if (first_other == n) {
-      first_other = i;
+    } else {
+      if (turn < 0) ++right_turns;
+      if (first_other == n) first_other = i;
     }
     const double dy = hull[(i + 1) % n].y - hull[i].y;
     const int direction = (dy > 0) - (dy < 0);
@@ -209,6 +211,10 @@ std::optional<HullDefect> hull_defect(const Ring& hull, const EngineLimits& limi
     last_direction = direction;
   }
   if (last_direction != first_direction) ++direction_changes;
+  // No turn either way: every vertex on one line (a glTF node scaled by 0 puts all on a point).
+  if (left_turns == 0 && right_turns == 0) {
+    return HullDefect{"its hull has no area (its vertices lie on one line)", false};
+  }
   if (left_turns == 0) return HullDefect{"its hull is clockwise", false};
   if (first_other < n) {
     return HullDefect{"its hull is not convex at its vertex " + point(hull[first_other]), false};
