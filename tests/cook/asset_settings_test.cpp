@@ -428,5 +428,26 @@ TEST_F(ProjectSettings, ImagesOfTheSameRulesShareTheirSettings) {
   EXPECT_EQ(own->max_verts, 4u);
 }
 
+// Stop 61: whole numbers written with a point (20.0, as some exporters write every number) read
+// as the whole numbers they are, in settings files as in sprite sheets (stop 59's sheet hunt
+// found a sheet's 20.0 refused; settings refused 200.0 alike). A fraction is still refused.
+TEST_F(ProjectSettings, Stop61_WholeNumbersWrittenWithAPointAreWhole) {
+  AssetSettings settings;
+  write(root / "art/tiles/grass.hullcook.json",
+        R"({"alpha": 200.0, "max_verts": 5.0, "physics": {"category": 6.0, "mask": 1e2}})");
+  const auto pointed = settings.for_input(root / "art/tiles/grass.png");
+  ASSERT_TRUE(pointed);
+  EXPECT_EQ(pointed->alpha, 200);
+  EXPECT_EQ(pointed->max_verts, 5u);
+  ASSERT_TRUE(pointed->physics);
+  EXPECT_EQ(pointed->physics->category_bits, 6);
+  EXPECT_EQ(pointed->physics->mask_bits, 100);
+  const fs::path sidecar = root / "art/hero.hullcook.json";
+  expect_refused(sidecar, R"({"alpha": 200.5})", "'alpha' must be an integer in 0..255");
+  expect_refused(sidecar, R"({"max_verts": 4.25})", "'max_verts'");
+  expect_refused(sidecar, R"({"physics": {"category": 1e10}})", "'category' must be an integer");
+  expect_refused(sidecar, R"({"alpha": -0.5})", "'alpha'");
+}
+
 }  // namespace
 }  // namespace hullcook

@@ -135,10 +135,11 @@ void apply_physics_json(PhysicsProperties& physics, const json& object, const st
       return value.get<double>();
     };
     auto bits = [&, &key = key, &value = value]() {
-      if (!value.is_number_unsigned() || value.get<std::uint64_t>() > 0xFFFF) {
+      const std::optional<long long> whole = whole_number(value);
+      if (!whole || *whole < 0 || *whole > 0xFFFF) {
         throw InputError(file + ": '" + key + "' must be an integer in 0..65535");
       }
-      return static_cast<std::uint16_t>(value.get<std::uint64_t>());
+      return static_cast<std::uint16_t>(*whole);
     };
     if (key == "density") {
       physics.density = static_cast<float>(number());
@@ -168,17 +169,17 @@ Settings with_overrides(Settings settings, const json& object, const std::string
       settings.lods.clear();
       for (const json& lod : value) settings.lods.push_back(tolerance_of(lod, file, key));
     } else if (key == "alpha") {
-      if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
-          value.get<std::int64_t>() > 255) {
+      const std::optional<long long> whole = whole_number(value);
+      if (!whole || *whole < 0 || *whole > 255) {
         throw InputError(file + ": 'alpha' must be an integer in 0..255");
       }
-      settings.alpha = static_cast<int>(value.get<std::int64_t>());
+      settings.alpha = static_cast<int>(*whole);
     } else if (key == "max_verts") {
-      const bool valid = value.is_number_unsigned() &&
-                         (value.get<std::uint64_t>() == 0 ||
-                          (value.get<std::uint64_t>() >= 3 && value.get<std::uint64_t>() <= 65535));
-      if (!valid) throw InputError(file + ": 'max_verts' must be 0 (no limit) or 3..65535");
-      settings.max_verts = value.get<std::size_t>();
+      const std::optional<long long> whole = whole_number(value);
+      if (!whole || !(*whole == 0 || (*whole >= 3 && *whole <= 65535))) {
+        throw InputError(file + ": 'max_verts' must be 0 (no limit) or 3..65535");
+      }
+      settings.max_verts = static_cast<std::size_t>(*whole);
     } else if (key == "measure") {
       if (!value.is_string() || !parse_measure(value.get<std::string>())) {
         throw InputError(file + ": 'measure' must be one of \"sl\", \"sp\", \"h1\", \"h2\"");

@@ -43,18 +43,9 @@ class SheetReader {
 
   int whole(const Json& object, const char* key, const std::string& where, long long least) const {
     const Json& value = member(object, key, where);
-    // 20.0 is a whole number too: some exporters write every number with a point.
-    const bool integral_real = value.is_number_float() && std::isfinite(value.get<double>()) &&
-                               std::trunc(value.get<double>()) == value.get<double>();
-    if (!value.is_number_integer() && !integral_real) {
-      fail(where, std::string("'") + key + "' must be a whole number");
-    }
-    const bool is_unsigned = value.is_number_unsigned();
-    const long long number =
-        integral_real ? static_cast<long long>(std::clamp(value.get<double>(), -1e12, 1e12))
-        : is_unsigned ? static_cast<long long>(std::min<std::uint64_t>(value.get<std::uint64_t>(),
-                                                                       kLargestCoordinate + 1))
-                      : value.get<long long>();
+    const std::optional<long long> whole = whole_number(value);
+    if (!whole) fail(where, std::string("'") + key + "' must be a whole number");
+    const long long number = *whole;
     if (number < least || number > kLargestCoordinate) {
       fail(where, std::string("'") + key + "' is " + value.dump() + ", out of range (" +
                       std::to_string(least) + " to " + std::to_string(kLargestCoordinate) + ")");

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <set>
@@ -80,6 +82,26 @@ Json parse_strict(std::string_view text, std::string& refusal) {
     refusal = "the key '" + *duplicate + "' appears twice in one object";
   }
   return json;
+}
+
+// The value of a whole number in JSON users write: an integer, or a number with a point whose
+// value is whole (20.0, as some exporters write every number); nullopt for anything else, and
+// for a magnitude beyond 2^62 (beyond every field's range: refused as out of range).
+template <typename Json>
+std::optional<long long> whole_number(const Json& value) {
+  constexpr long long kLargest = 1ll << 62;
+  if (value.is_number_unsigned()) {
+    return static_cast<long long>(
+        std::min<unsigned long long>(value.template get<unsigned long long>(), kLargest));
+  }
+  if (value.is_number_integer()) {
+    return std::clamp<long long>(value.template get<long long>(), -kLargest, kLargest);
+  }
+  if (!value.is_number_float()) return std::nullopt;
+  const double number = value.template get<double>();
+  if (!std::isfinite(number) || std::trunc(number) != number) return std::nullopt;
+  return static_cast<long long>(
+      std::clamp(number, -static_cast<double>(kLargest), static_cast<double>(kLargest)));
 }
 
 }  // namespace hullcook
