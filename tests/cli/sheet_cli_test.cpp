@@ -326,7 +326,9 @@ TEST_F(SheetCli, BadSheetsAreRefusedNamingTheFile) {
   auto with = [&](const char* key, const json& value) {
     return json{{"a", merged({{key, value}})}};
   };
-  expect_refused("malformed.json", R"({"frames": {)", "not a JSON object");
+  expect_refused("malformed.json", R"({"frames": {)",
+                 "not valid JSON: parse error at line 1, column 13: syntax error");
+  expect_refused("not_an_object.json", "[1, 2]", "not a JSON object");
   expect_refused("no_image.json", json{{"frames", {{"a", good}}}, {"meta", json::object()}}.dump(),
                  "meta: no 'image'");
   expect_refused("not_a_sheet.json", R"({"density": 2})", "not a sprite sheet");

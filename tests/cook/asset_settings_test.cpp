@@ -258,7 +258,11 @@ TEST_F(ProjectSettings, Issue18_MalformedSettingsAreBadInputNamingTheFile) {
   Settings settings;
   settings.threads = 1;
   const fs::path project = root / "art/hullcook.json", sidecar = root / "art/hero.hullcook.json";
-  expect_refused(project, "{\"assets\": [", "not a JSON object");
+  expect_refused(project, "{\"assets\": [\n  {\"match\": \"*\"}\n  {}]}",
+                 "not valid JSON: parse error at line 3, column 3: syntax error");
+  expect_refused(project, "[]", "not a JSON object of project settings");
+  expect_refused(project, R"({"assets": [{"match": "*", "tau": 1e400}]})",
+                 "not valid JSON: number overflow parsing '1e400'");
   expect_refused(project, R"({"asset": []})", "unknown key 'asset'");
   expect_refused(project, R"({"assets": [{"tau": 2}]})", "needs a \"match\" glob");
   expect_refused(project, R"({"assets": [{"match": "*", "alpha": 300}]})", "'alpha'");

@@ -81,6 +81,21 @@ Json parse_strict(std::string_view text, std::string& refusal) {
   if (duplicate && json.is_object()) {
     refusal = "the key '" + *duplicate + "' appears twice in one object";
   }
+  if (json.is_discarded()) {
+    // Where and why, as the parser says it ("parse error at line 3, column 5: ..."): "not a JSON
+    // object" left a user to find a missing comma in a project file alone.
+    try {
+      const Json reparsed = Json::parse(text);  // throws: it was discarded above
+      (void)reparsed;
+    } catch (const nlohmann::json::exception& error) {
+      std::string why = error.what();  // "[json.exception.parse_error.101] parse error at ..."
+      const std::size_t tag_end = why.find("] ");
+      if (why.rfind("[json.exception", 0) == 0 && tag_end != std::string::npos) {
+        why.erase(0, tag_end + 2);
+      }
+      refusal = "not valid JSON: " + why;
+    }
+  }
   return json;
 }
 
