@@ -3,6 +3,7 @@
 #include "constrainer.h"
 
 #include "hull_fitter.h"
+#include "merge_retries.h"
 #include "piece_merge.h"
 #include "small_hull.h"
 
@@ -96,23 +97,13 @@ std::vector<CookedPiece> Constrainer::finish(std::string_view source) {
 
 template <typename Wants>
 void Constrainer::merge_while(const Wants& wants) {
-  std::vector<std::size_t> failed_at(slots_.size(), 0);  // the clock then; 0: not failed
-  auto changed_since = [&](std::size_t k, std::size_t time) {
-    if (grown_at_[k] > time) return true;
-    return std::any_of(touching_[k].begin(), touching_[k].end(),
-                       [&](std::size_t j) { return grown_at_[j] > time || merged_at_[j] > time; });
-  };
+  retries_.reset(slots_.size());
   bool progress = true;
   while (progress) {
     progress = false;
     for (std::size_t k = 0; k < slots_.size(); ++k) {
-      if (!wants(slots_[k]) || slots_[k].merged) continue;
-      if (failed_at[k] != 0 && !changed_since(k, failed_at[k])) continue;
-      if (merge_into_neighbour(k)) {
-        progress = true;
-      } else {
-        failed_at[k] = clock_;
-      }
+      if (!wants(slots_[k]) || slots_[k].merged || !retries_.worth_trying(k)) continue;
+      if (merge_into_neighbour(k)) progress = true;
     }
   }
 }
@@ -131,7 +122,8 @@ bool Constrainer::merge_into_neighbour(std::size_t k) {
   // again unchanged, only those that touched it at its last try, or the slots they merged into
   // since: any other was apart from it then and has grown by none that touched it. (The boxes
   // of a star's spikes all meet at its hub: 800 of them per try.)
-  std::vector<std::size_t>& touching = touching_[k];  // for merge_while, should this fail
+  std::vector<std::size_t>& touching = touching_[k];  // for its next try, should this fail
+  std::vector<MergeRetries::Touch> touches;           // for merge_while, should this fail
   std::vector<std::size_t> candidates;
   const bool retouch = touched_at_[k] != 0 && grown_at_[k] <= touched_at_[k];
   if (retouch) {
@@ -148,8 +140,13 @@ bool Constrainer::merge_into_neighbour(std::size_t k) {
     const Slot& other = slots_[j];
     if (j == k || other.merged || !box.touches(boxes_[j])) continue;
     // Cheap rejections first: most boxes that touch belong to pieces that meet at a point.
-    const int shared = boundary_points_shared(small.component.outer, other.piece.component.outer);
-    if (shared > 0) touching.push_back(j);
+    const SharedBoundaryPoints points =
+        shared_boundary_points(small.component.outer, other.piece.component.outer);
+    const int shared = points.count;
+    if (shared > 0) {
+      touching.push_back(j);
+      touches.push_back({j, shared, points.first});
+    }
     if (!other.placed || shared < 2 || union_surely_beyond(small, other.piece, tau_)) continue;
     if (std::optional<Region> merged = merge_components(small.component, other.piece.component)) {
       double shared = perimeter(small.component.outer) + perimeter(other.piece.component.outer) -
@@ -183,12 +180,17 @@ bool Constrainer::merge_into_neighbour(std::size_t k) {
     neighbour.is_thin = is_thin(neighbour.hull);
     slots_[k].merged = true;
     boxes_[option.slot] = SlotBox(neighbour.piece.component.outer);
-    grown_at_[option.slot] = merged_at_[k] = ++clock_;
+    grown_at_[option.slot] = ++clock_;
     merged_into_[k] = option.slot;
+    retries_.merged(k, option.slot);
+    // It is tried no more. (Kept, the lists of a fan's merged pieces, each of all the others
+    // that meet at its apex, took 80 MB for a comb 16,384 px wide.)
+    std::vector<std::size_t>().swap(touching);
     if (grids_[neighbour.piece.region])
       grids_[neighbour.piece.region]->add(option.slot, boxes_[option.slot]);
     return true;
   }
+  retries_.failed(k, touches);
   return false;
 }
 

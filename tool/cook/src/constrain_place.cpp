@@ -59,7 +59,6 @@ void Constrainer::add_all_reusing(const Constrainer* without, std::vector<Cooked
   }
   grids_.resize(slots_of_region_.size());
   grown_at_.assign(slots_.size(), 0);
-  merged_at_.assign(slots_.size(), 0);
   merged_into_.assign(slots_.size(), 0);
   touched_at_.assign(slots_.size(), 0);
   touching_.assign(slots_.size(), {});

@@ -5,6 +5,7 @@
 // (constrain.cpp) runs it, with and without halving.
 #pragma once
 
+#include "merge_retries.h"
 #include "outline_distance.h"
 #include "slot_grid.h"
 
@@ -114,10 +115,11 @@ class Constrainer {
   // Merging (constrain_merge.cpp).
   // Merges every slot that wants it (and is not merged already) into a neighbour, pass after
   // pass while one merges: a merge may make room for another. A slot that failed is tried again
-  // only once it, or a slot that touched it when it failed, has grown or merged since: its try
-  // depends on the slots that touch it alone, and a slot that touches it later has grown by one
-  // that touched it. (Retrying it when any slot whose box may touch it grew retried every spike
-  // of a star whenever its hub grew: a 32,000-vertex star's 219 merges took 300,000 tries.)
+  // only once it has grown, or a slot that may now share a cut with it has grown (see
+  // MergeRetries): its try depends on the slots that touch it alone, and a slot that touches it
+  // later has grown by one that touched it. (Retrying it when any slot whose box may touch it
+  // grew retried every spike of a star whenever its hub grew: a 32,000-vertex star's 219 merges
+  // took 300,000 tries.)
   template <typename Wants>
   void merge_while(const Wants& wants);
 
@@ -178,10 +180,10 @@ class Constrainer {
   std::vector<std::size_t> near_;                          // slots_near's answer
   std::size_t clock_ = 1;                                  // counts merges, from 1
   std::vector<std::size_t> grown_at_;     // per slot: the clock when it last grew by a merge
-  std::vector<std::size_t> merged_at_;    // per slot: the clock when it merged (0: not)
   std::vector<std::size_t> merged_into_;  // per merged slot: the slot it merged into
   std::vector<std::vector<std::size_t>> touching_;  // per slot: those touching it at its last try
   std::vector<std::size_t> touched_at_;             // per slot: the clock at its last try (0: none)
+  MergeRetries retries_;                            // merge_while's: which slots may merge now
   std::optional<OutlineDistance> outline_;  // the union of all components, built when needed
   // The hulls grow gave, in order, with whether each is proven wholly within τ of the outline
   // (0: not yet asked, 1: yes, -1: not proven), for the slots grown after it.

@@ -95,6 +95,10 @@ bool folds_back(Vec2 before, Vec2 shared, Vec2 after) {
 bool meet_at_two_points(const Ring& a, const Ring& b) { return boundary_points_shared(a, b) == 2; }
 
 int boundary_points_shared(const Ring& a, const Ring& b) {
+  return shared_boundary_points(a, b).count;
+}
+
+SharedBoundaryPoints shared_boundary_points(const Ring& a, const Ring& b) {
   const Box a_box = box_of(a), b_box = box_of(b);
   auto on_boundary_of = [](const Ring& ring, const Box& box, Vec2 p) {
     if (!box.holds(p)) return false;
@@ -113,8 +117,9 @@ int boundary_points_shared(const Ring& a, const Ring& b) {
     }
     return false;
   };
-  if (second_found(a, b, b_box) || second_found(b, a, a_box)) return 2;
-  return first ? 1 : 0;
+  if (second_found(a, b, b_box) || second_found(b, a, a_box)) return {2, *first};
+  if (first) return {1, *first};
+  return {};
 }
 
 std::optional<Region> merge_components(const Region& a_region, const Region& b_region) {

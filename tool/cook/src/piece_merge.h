@@ -26,4 +26,11 @@ bool meet_at_two_points(const Ring& a, const Ring& b);
 // meet_at_two_points counts them: 0, 1, or 2 for two or more.
 int boundary_points_shared(const Ring& a, const Ring& b);
 
+// boundary_points_shared's count, with the first point found: the only one when count is 1.
+struct SharedBoundaryPoints {
+  int count = 0;
+  Vec2 first{0, 0};
+};
+SharedBoundaryPoints shared_boundary_points(const Ring& a, const Ring& b);
+
 }  // namespace hullcook
