@@ -288,8 +288,8 @@ TEST_F(GltfInspect, Stop61_FilesThatBreakTheWritersPromisesAreRefused) {
   changed("mirrored.gltf", "levels[0], hull 0: its hull is clockwise", meshopt, [](json& root) {
     root["nodes"][0]["scale"][0] = -root["nodes"][0]["scale"][0].get<double>();
   });
-  changed("levels_out_of_order.gltf", "levels[1]: \"tau\" 0.5 is finer than the level before", good,
-          [](json& root) {
+  changed("levels_out_of_order.gltf", "levels[1]: \"tau\" 0.5 is finer than the previous level's",
+          good, [](json& root) {
             json& levels = root["nodes"][0]["extras"]["hullcook"]["levels"];
             levels[0]["tau"] = 1.0;
             levels[1]["tau"] = 0.5;

@@ -10,6 +10,7 @@
 #include "hullcook/cook/asset.h"
 #include "hullcook/cook/contract.h"
 #include "hullcook/cook/debug_json.h"
+#include "hullcook/core/decompose.h"
 
 #include <nlohmann/json.hpp>
 
@@ -246,8 +247,7 @@ void check_asset(const CookedAsset& asset, const std::string& where) {
     throw BadGltf(where + ": \"pixels_per_unit\" is not a positive 32-bit float");
   }
   if (!(asset.tau >= 0)) throw BadGltf(where + ": a negative \"tau\"");
-  if (asset.measure != "sl" && asset.measure != "sp" && asset.measure != "h1" &&
-      asset.measure != "h2") {
+  if (!parse_measure(asset.measure)) {
     throw BadGltf(where + ": \"measure\" '" + printable(asset.measure) +
                   "' is not one of sl, sp, h1, h2");
   }
@@ -257,7 +257,8 @@ void check_asset(const CookedAsset& asset, const std::string& where) {
     const std::string at = where + ".levels[" + std::to_string(l) + "]";
     if (!(level.tau >= finer)) {
       throw BadGltf(at + ": \"tau\" " + shortest_text(level.tau) +
-                    (level.tau < 0 ? " is negative" : " is finer than the level before it's"));
+                    (level.tau < 0 ? " is negative"
+                                   : " is finer than the previous level's (finest go first)"));
     }
     finer = level.tau;
     for (std::size_t h = 0; h < level.hulls.size(); ++h) {

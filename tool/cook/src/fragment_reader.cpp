@@ -2,6 +2,7 @@
 
 #include "hullcook/cook/contract.h"
 
+#include "hullcook/core/decompose.h"
 #include "hullcook/core/error.h"
 #include "hullcook/format/crc32.h"
 #include "hullcook/format/fragment_layout.h"
@@ -121,8 +122,7 @@ CookedAsset decode_asset(Decoder& in) {
   asset.tau = in.f64("tau");
   if (!(asset.tau >= 0)) in.fail("a negative tau");
   asset.measure = in.string("measure");
-  if (asset.measure != "sl" && asset.measure != "sp" && asset.measure != "h1" &&
-      asset.measure != "h2") {
+  if (!parse_measure(asset.measure)) {
     in.fail("an unknown measure '" + asset.measure + "'");
   }
   const std::size_t regions = in.count("regions", 8);
