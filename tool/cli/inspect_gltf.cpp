@@ -242,8 +242,7 @@ std::vector<Ring> buffer_hulls(const json& level, const Fields& fields, const Gl
 // 0 make them points, and levels out of order, each printed with exit 0.
 void check_asset(const CookedAsset& asset, const std::string& where) {
   if (asset.name.empty()) throw BadGltf(where + ": an asset node without a name");
-  if (!(static_cast<float>(asset.pixels_per_unit) > 0.0f) ||
-      !std::isfinite(static_cast<float>(asset.pixels_per_unit))) {
+  if (!stores_as_positive_float(asset.pixels_per_unit)) {
     throw BadGltf(where + ": \"pixels_per_unit\" is not a positive 32-bit float");
   }
   if (!(asset.tau >= 0)) throw BadGltf(where + ": a negative \"tau\"");
@@ -392,9 +391,19 @@ GltfContents read_gltf(const std::filesystem::path& path) {
     const json& nodes = root["nodes"];
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const json& node = nodes[i];
-      if (!node.is_object() || !node.contains("extras") || !node["extras"].is_object()) continue;
+      const bool with_extras = node.is_object() && node.contains("extras") &&
+                               node["extras"].is_object() && node["extras"].contains("hullcook") &&
+                               node["extras"]["hullcook"].is_object();
+      // Every node hullcook writes holds extras.hullcook (an asset node's, or in version 1 a hull
+      // node's): one without it lost it (other tools' exports drop extras), and printing "0
+      // assets" would hide that.
+      if (!with_extras && ours) {
+        throw BadGltf("node " + std::to_string(i) +
+                      " has no extras.hullcook, which every node hullcook writes holds (the "
+                      "hulls' data; did another tool drop the extras?)");
+      }
+      if (!with_extras) continue;
       const json& extras = node["extras"];
-      if (!extras.contains("hullcook") || !extras["hullcook"].is_object()) continue;
       if (!extras["hullcook"].contains("version")) continue;  // a hull node, not an asset node
       contents.assets.push_back(read_asset(node, extras["hullcook"], i, data));
     }
@@ -403,21 +412,6 @@ GltfContents read_gltf(const std::filesystem::path& path) {
   // ours.
   if (contents.assets.empty() && !ours) {
     throw BadGltf("glTF without hullcook data (no node has extras.hullcook with a version)");
-  }
-  // Every node hullcook writes holds extras.hullcook (an asset node's, or in version 1 a hull
-  // node's): one without it lost it (other tools' exports drop extras), and printing "0 assets"
-  // would hide that.
-  if (ours && root.contains("nodes") && root["nodes"].is_array()) {
-    const json& nodes = root["nodes"];
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      const json& node = nodes[i];
-      if (!node.is_object() || !node.contains("extras") || !node["extras"].is_object() ||
-          !node["extras"].contains("hullcook") || !node["extras"]["hullcook"].is_object()) {
-        throw BadGltf("node " + std::to_string(i) +
-                      " has no extras.hullcook, which every node hullcook writes holds (the "
-                      "hulls' data; did another tool drop the extras?)");
-      }
-    }
   }
   // Names are the assets' keys, as in a bundle.
   std::vector<const std::string*> names;

@@ -42,8 +42,7 @@ void check_name(const CookedAsset& asset) {
 
 void check_asset(const CookedAsset& asset, const std::vector<CookedLevel>& levels) {
   check_bundle_image_size(asset.name, asset.source, asset.image_width, asset.image_height);
-  if (!std::isfinite(asset.pixels_per_unit) || !(static_cast<float>(asset.pixels_per_unit) > 0) ||
-      !std::isfinite(static_cast<float>(asset.pixels_per_unit)))
+  if (!stores_as_positive_float(asset.pixels_per_unit))
     bundle_asset_error(asset, "pixels per unit must be a positive, finite 32-bit float");
   if (!std::isfinite(static_cast<float>(asset.pivot.x)) ||
       !std::isfinite(static_cast<float>(asset.pivot.y)))

@@ -645,10 +645,7 @@ CookResult cook(const std::vector<std::filesystem::path>& inputs, const Settings
   if (!parse_measure(settings.measure)) {
     throw UsageError("--measure: '" + settings.measure + "' is not one of sl, sp, h1, h2");
   }
-  // Bundles store it as an f32: below the smallest one it would be stored as 0 (issue 19's
-  // fuzzing of link found such a bundle, which the runtime refuses).
-  if (!(static_cast<float>(settings.pixels_per_unit) > 0.0f) ||
-      !std::isfinite(static_cast<float>(settings.pixels_per_unit))) {
+  if (!stores_as_positive_float(settings.pixels_per_unit)) {
     throw UsageError("--ppu must be positive and within the range of a 32-bit float");
   }
   AssetSettings asset_settings(settings);

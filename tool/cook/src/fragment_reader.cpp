@@ -108,8 +108,7 @@ CookedAsset decode_asset(Decoder& in) {
   asset.image_height = in.raw<std::int32_t>("image height");
   if (asset.image_width < 0 || asset.image_height < 0) in.fail("a negative image size");
   asset.pixels_per_unit = in.f64("pixels per unit");
-  if (!(static_cast<float>(asset.pixels_per_unit) > 0.0f) ||
-      !std::isfinite(static_cast<float>(asset.pixels_per_unit))) {
+  if (!stores_as_positive_float(asset.pixels_per_unit)) {
     in.fail("pixels per unit not a positive 32-bit float");
   }
   asset.pivot = in.point("pivot");

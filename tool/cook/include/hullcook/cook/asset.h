@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,6 +80,15 @@ struct SpriteCutout {
   int offset_x = 0, offset_y = 0;  // [px] the sprite's top left in the asset's frame
   std::optional<std::array<std::uint8_t, 3>> color_key;  // RGB traced as transparent (--color-key)
 };
+
+// Whether pixels per unit stores as a positive, finite 32-bit float, as bundles and glTF keep it:
+// below the smallest float it would be stored as 0 (issue 19's fuzzing of link found such a
+// bundle, which the runtime refuses). The cook, the writers and the readers of fragments and
+// glTF ask it alike.
+inline bool stores_as_positive_float(double pixels_per_unit) {
+  const float stored = static_cast<float>(pixels_per_unit);
+  return stored > 0.0f && stored <= std::numeric_limits<float>::max();
+}
 
 struct CookedAsset {
   std::string name;      // path relative to the input root, '/'-separated
